@@ -1,0 +1,230 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURED_BORDER_PARAMETERIZER_3_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURED_BORDER_PARAMETERIZER_3_H
+
+/// \file Measured_border_parameterizer_3.h
+
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
+#include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
+#include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
+#include <CGAL/Surface_mesh_parameterization/internal/polar_map.h>
+
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Default.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// A border parameterizer that maps the border of a disk-like mesh onto the *measured*
+/// polygon of the paper "Measured boundary parameterization based on Poisson's equation":
+///
+/// 1. a center vertex is found by the `CenterLocator` policy (default: the maximum of the
+///    boundary Poisson distance map);
+/// 2. the distance `r_k` from the center to every border vertex `b_k` is measured by the
+///    `BorderDistance` policy (default: the Poisson distance map from the center);
+/// 3. the border is laid out as a polar map around the center: the angle of `b_k` is
+///    `-2 pi (theta_0 + ... + theta_{k-1}) / (theta_0 + ... + theta_{m-1})`, where `theta_l`
+///    is the 3D angle at the center between `b_l` and `b_{l+1}`, and its radius is `r_k`.
+///
+/// The conventions are those of `Circular_border_arc_length_parameterizer_3`, so the class
+/// is a drop-in replacement in every fixed border parameterizer of CGAL
+/// (`Discrete_conformal_map_parameterizer_3`, `Mean_value_coordinates_parameterizer_3`,
+/// `Barycentric_mapping_parameterizer_3`, `Discrete_authalic_parameterizer_3`): the loop
+/// `halfedges_around_face(bhd)` is mapped with decreasing angles starting at `source(bhd)` at
+/// angle 0, and the polygon is scaled uniformly so that its bounding box is centered in
+/// \f$ [0,1]^2 \f$ with its longest side spanning \f$ [0,1] \f$.
+///
+/// The measured polygon is star-shaped around the center, hence simple, but in general not
+/// convex. `is_border_convex()` reports whether the polygon of the last call was verified
+/// strictly convex; CGAL's barycentric and mean value parameterizers skip their one-to-one
+/// check only in that case.
+///
+/// The record of the last call (center, border vertices, distances, angles, work counters)
+/// can be read back. Copies of a parameterizer share that record (as CGAL's
+/// `Eigen_solver_traits` share their solver), so the object a user passes to
+/// `Discrete_conformal_map_parameterizer_3`'s constructor sees the calls made through the
+/// copy stored inside it. Do not use copies of one object concurrently.
+///
+/// \cgalModels `Parameterizer_3` (border parameterizer part, as CGAL's circular border
+///             parameterizers)
+///
+/// \tparam TriangleMesh_ a model of `FaceGraph`.
+/// \tparam CenterLocator_ a model of `MeasuredCenterLocator`. %Default:
+///         `Poisson_center_locator<TriangleMesh_>`.
+/// \tparam BorderDistance_ a model of `MeasuredBorderDistance`. %Default:
+///         `Poisson_border_distance<TriangleMesh_>`.
+/// \tparam SolverTraits_ a model of `SparseLinearAlgebraWithFactorTraits_d` for the linear
+///         systems of the policies. %Default: `Default_sparse_cholesky_traits`.
+///
+/// `CGAL::Default` may be given for any policy to get its default.
+template <class TriangleMesh_,
+          class CenterLocator_ = Poisson_center_locator<TriangleMesh_>,
+          class BorderDistance_ = Poisson_border_distance<TriangleMesh_>,
+          class SolverTraits_ = Default>
+class Measured_border_parameterizer_3
+{
+public:
+  /// Triangle mesh type
+  typedef TriangleMesh_                                                          Triangle_mesh;
+  typedef TriangleMesh_                                                          TriangleMesh;
+  /// Center locator type
+  typedef typename Default::Get<CenterLocator_,
+                                Poisson_center_locator<TriangleMesh_> >::type   Center_locator;
+  /// Border distance type
+  typedef typename Default::Get<BorderDistance_,
+                                Poisson_border_distance<TriangleMesh_> >::type  Border_distance;
+  /// Solver traits type
+  typedef typename internal::Get_solver_traits<SolverTraits_>::type              Solver_traits;
+  /// The patch type the policies work on
+  typedef Parameterization_patch_3<TriangleMesh_, Solver_traits>                 Patch;
+
+  typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor         vertex_descriptor;
+  typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor       halfedge_descriptor;
+
+  /// What the last call computed.
+  struct Record
+  {
+    /// status of the last call
+    Error_code status = ERROR_WRONG_PARAMETER;
+    /// the center vertex
+    vertex_descriptor center = boost::graph_traits<Triangle_mesh>::null_vertex();
+    /// the border loop, from `source(bhd)`
+    std::vector<vertex_descriptor> border_vertices;
+    /// distance from the center to each border vertex (same order)
+    std::vector<double> border_distances;
+    /// polar angle `phi_k` in `[0, 2 pi)` of each border vertex (the UV angle is `-phi_k`)
+    std::vector<double> border_angles;
+    /// whether the border polygon was verified strictly convex
+    bool strictly_convex = false;
+    /// factorizations and back-substitutions done by the call
+    typename Patch::Statistics statistics;
+  };
+
+  /// creates a border parameterizer with the given policies.
+  explicit Measured_border_parameterizer_3(Center_locator center_locator = Center_locator(),
+                                           Border_distance border_distance = Border_distance())
+    : m_center_locator(center_locator),
+      m_border_distance(border_distance),
+      m_record(std::make_shared<Record>())
+  { }
+
+  /// assigns to the border vertices of the loop of `bhd` their position on the measured
+  /// polygon, and marks them parameterized in `vpmap`. Nothing is written on failure.
+  ///
+  /// \tparam VertexUVmap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key
+  ///         and a 2D point type constructible from two `double` as value.
+  /// \tparam VertexIndexMap a model of `ReadablePropertyMap` (unused: the patch indexes its
+  ///         own vertices).
+  /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` with
+  ///         `vertex_descriptor` as key and `bool` as value.
+  ///
+  /// \return `OK` or the first failure: see `Parameterization_patch_3::build_disk()` for
+  ///         the input checks, then the policies' codes, then `ERROR_DEGENERATE_BORDER_MAP`.
+  template <class VertexUVmap, class VertexIndexMap, class VertexParameterizedMap>
+  Error_code parameterize(const Triangle_mesh& mesh,
+                          halfedge_descriptor bhd,
+                          VertexUVmap uvmap,
+                          VertexIndexMap /* vimap */,
+                          VertexParameterizedMap vpmap)
+  {
+    Patch patch;
+    Error_code status = patch.build_disk(mesh, bhd, get(vertex_point, mesh));
+    if(status != OK)
+    {
+      *m_record = Record();
+      m_record->status = status;
+      return status;
+    }
+    std::vector<Eigen::Vector2d> uv;
+    status = parameterize_border(patch, uv);
+    if(status != OK)
+      return status;
+
+    typedef typename boost::property_traits<VertexUVmap>::value_type Point_2;
+    for(std::size_t k = 0; k < uv.size(); ++k)
+    {
+      const vertex_descriptor v = patch.vertex(static_cast<std::size_t>(patch.border()[k]));
+      put(uvmap, v, Point_2(uv[k].x(), uv[k].y()));
+      put(vpmap, v, true);
+    }
+    return OK;
+  }
+
+  /// the patch-level step: runs the two policies and the polar map on `patch` (a disk patch)
+  /// and stores the border UVs, one per `patch.border()` entry, in `uv`. Updates the record.
+  /// `Measured_conformal_parameterizer_3` calls this with its own patch so that the policies
+  /// share its factorization.
+  template <class AnyPatch>
+  Error_code parameterize_border(AnyPatch& patch, std::vector<Eigen::Vector2d>& uv)
+  {
+    Record record;
+    std::size_t center = 0;
+    std::vector<double> distances;
+    internal::Polar_border polar;
+    Error_code status = m_center_locator.locate_center(patch, center);
+    if(status == OK)
+      status = m_border_distance.compute_border_distances(patch, center, distances);
+    if(status == OK)
+      status = internal::polar_border_map(patch, center, distances, polar);
+
+    record.status = status;
+    record.statistics = patch.statistics();
+    if(status == OK)
+    {
+      record.center = patch.vertex(center);
+      record.border_vertices.reserve(patch.border().size());
+      for(int b : patch.border())
+        record.border_vertices.push_back(patch.vertex(static_cast<std::size_t>(b)));
+      record.border_distances = distances;
+      record.border_angles = polar.angles;
+      record.strictly_convex = polar.strictly_convex;
+      uv = polar.uv;
+    }
+    *m_record = record;
+    return status;
+  }
+
+  /// whether the border polygon of the last successful call was verified strictly convex
+  /// (`false` before any call and after a failure).
+  bool is_border_convex() const { return m_record->status == OK && m_record->strictly_convex; }
+
+  /// the record of the last call.
+  const Record& last_record() const { return *m_record; }
+  /// the center vertex of the last call (`null_vertex()` after a failure).
+  vertex_descriptor center() const { return m_record->center; }
+  /// the border vertices of the last call, from `source(bhd)` along the loop.
+  const std::vector<vertex_descriptor>& border_vertices() const { return m_record->border_vertices; }
+  /// the distance from the center to each border vertex in the last call.
+  const std::vector<double>& border_distances() const { return m_record->border_distances; }
+  /// the polar angle of each border vertex in the last call.
+  const std::vector<double>& border_angles() const { return m_record->border_angles; }
+
+  /// the center locator.
+  const Center_locator& center_locator() const { return m_center_locator; }
+  /// the border distance policy.
+  const Border_distance& border_distance() const { return m_border_distance; }
+
+private:
+  Center_locator m_center_locator;
+  Border_distance m_border_distance;
+  std::shared_ptr<Record> m_record;
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURED_BORDER_PARAMETERIZER_3_H

@@ -1,0 +1,72 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_POISSON_BORDER_DISTANCE_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_POISSON_BORDER_DISTANCE_H
+
+/// \file Poisson_border_distance.h
+
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/poisson_distance.h>
+
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// The paper's border distance (section 4.2, MBPPP): the Poisson distance map from the
+/// center (`poisson_distance_map()`, spring weights \f$ |x_i - x_j|^{-r} \f$, only the center
+/// constrained), read at the border vertices. Positive by the paper's Theorem A1.
+///
+/// Cost: one factorization of the spring Laplacian (all vertices but the center) and one
+/// back-substitution.
+///
+/// \cgalModels `MeasuredBorderDistance`
+///
+/// \tparam TriangleMesh a model of `FaceGraph`.
+template <class TriangleMesh>
+class Poisson_border_distance
+{
+public:
+  /// \param spring_exponent the exponent \f$ r \f$ of the spring weights (default 1).
+  explicit Poisson_border_distance(double spring_exponent = 1.)
+    : m_exponent(spring_exponent)
+  { }
+
+  /// the exponent of the spring weights.
+  double spring_exponent() const { return m_exponent; }
+
+  /// stores in `distances[k]` the Poisson distance from `center` to `patch.border()[k]`.
+  /// \return `OK`, `ERROR_WRONG_PARAMETER` (non-finite exponent or bad center), or
+  ///         `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
+  template <class Patch>
+  Error_code compute_border_distances(Patch& patch, std::size_t center,
+                                      std::vector<double>& distances) const
+  {
+    if(!std::isfinite(m_exponent) || center >= patch.number_of_vertices())
+      return ERROR_WRONG_PARAMETER;
+    std::vector<double> values;
+    const std::vector<int> sources(1, static_cast<int>(center));
+    const Error_code status = internal::spring_poisson_distance(patch, sources, m_exponent, values);
+    if(status != OK)
+      return status;
+    distances.resize(patch.border().size());
+    for(std::size_t k = 0; k < distances.size(); ++k)
+      distances[k] = values[static_cast<std::size_t>(patch.border()[k])];
+    return OK;
+  }
+
+private:
+  double m_exponent;
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_POISSON_BORDER_DISTANCE_H

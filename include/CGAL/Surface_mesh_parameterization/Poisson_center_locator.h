@@ -1,0 +1,65 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_POISSON_CENTER_LOCATOR_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_POISSON_CENTER_LOCATOR_H
+
+/// \file Poisson_center_locator.h
+
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/center_selection.h>
+#include <CGAL/Surface_mesh_parameterization/internal/poisson_distance.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// The paper's center locator (section 4.1): the center is the maximum, over the interior
+/// vertices, of the boundary Poisson distance map (`boundary_poisson_distance_map()`,
+/// cotangent weights, the border loop constrained).
+///
+/// Ties: values within a relative `1e-9` of the maximum count as tied; among several tied
+/// maxima the center is the interior vertex nearest to their mean position (3D Euclidean
+/// distance), then the one of smallest patch index. The result is therefore deterministic
+/// for a given mesh, and, since the map is invariant under rigid motions and uniform
+/// scaling, so is the center.
+///
+/// Cost: one back-substitution with the patch's factorization of the interior cotangent
+/// Laplacian, which it creates when it is the first to need it; the discrete conformal
+/// interior solve of `Measured_conformal_parameterizer_3` reuses it.
+///
+/// \cgalModels `MeasuredCenterLocator`
+///
+/// \tparam TriangleMesh a model of `FaceGraph`.
+template <class TriangleMesh>
+class Poisson_center_locator
+{
+public:
+  /// stores in `center` the patch index of the maximum of the boundary Poisson distance map.
+  /// \return `OK`, `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` or `ERROR_NO_INTERIOR_VERTEX`.
+  template <class Patch>
+  Error_code locate_center(Patch& patch, std::size_t& center) const
+  {
+    std::vector<double> values;
+    const Error_code status = internal::boundary_poisson_distance(patch, values);
+    if(status != OK)
+      return status;
+    const int c = internal::argmax_with_tie_break(patch, values);
+    if(c < 0)
+      return patch.interior_vertices().empty() ? ERROR_NO_INTERIOR_VERTEX
+                                               : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    center = static_cast<std::size_t>(c);
+    return OK;
+  }
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_POISSON_CENTER_LOCATOR_H

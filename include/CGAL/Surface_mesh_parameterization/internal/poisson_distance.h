@@ -1,0 +1,108 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POISSON_DISTANCE_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POISSON_DISTANCE_H
+
+// Paper Eq. 1 on a Parameterization_patch_3 (METHOD.md section 2):
+//   sum_j w_ij (f_i - f_j) = d_i g_i  on the unknowns,  f = 0 on the constrained vertices,
+// i.e. the normalised Laplacian equation  Delta f = -g  multiplied by d_i = sum_j w_ij.
+
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/sparse_solver.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// Boundary Poisson distance map: cotangent weights, the main border loop constrained. Uses
+// (and, on first use, creates) the patch's factorization of L_II. `values` gets one entry per
+// patch vertex (0 on the border loop).
+template <class Patch>
+Error_code boundary_poisson_distance(Patch& patch, std::vector<double>& values)
+{
+  const std::vector<int>& interior = patch.interior_vertices();
+  const std::vector<double>& d = patch.cotangent_row_sums();
+  const std::vector<double>& g = patch.mean_spoke_lengths();
+  std::vector<double> rhs(interior.size()), x;
+  for(std::size_t r = 0; r < interior.size(); ++r)
+  {
+    const std::size_t i = static_cast<std::size_t>(interior[r]);
+    rhs[r] = d[i] * g[i];
+  }
+  const Error_code status = patch.solve_interior(rhs, x);
+  if(status != OK)
+    return status;
+  values.assign(patch.number_of_vertices(), 0.);
+  for(std::size_t r = 0; r < interior.size(); ++r)
+    values[static_cast<std::size_t>(interior[r])] = x[r];
+  return OK;
+}
+
+// Poisson distance map from `sources` (local indices): spring weights |x_i - x_j|^(-r), every
+// other vertex of the patch unknown. One factorization of its own (recorded in the patch's
+// statistics). `values` gets one entry per patch vertex (0 at the sources).
+template <class Patch>
+Error_code spring_poisson_distance(Patch& patch, const std::vector<int>& sources,
+                                   double exponent, std::vector<double>& values)
+{
+  const std::size_t n = patch.number_of_vertices();
+  if(sources.empty())
+    return ERROR_WRONG_PARAMETER;
+  std::vector<int> unknown(n, 0);
+  for(int s : sources)
+  {
+    if(s < 0 || static_cast<std::size_t>(s) >= n)
+      return ERROR_WRONG_PARAMETER;
+    unknown[static_cast<std::size_t>(s)] = -1;
+  }
+  std::vector<int> rows;
+  for(std::size_t i = 0; i < n; ++i)
+    if(unknown[i] == 0)
+    {
+      unknown[i] = static_cast<int>(rows.size());
+      rows.push_back(static_cast<int>(i));
+    }
+
+  values.assign(n, 0.);
+  if(rows.empty())
+    return OK;
+
+  const Spring_weight weight{&patch.faces_indices(), &patch.points(),
+                             &patch.single_edge_masks(), exponent};
+  std::vector<double> d;
+  laplacian_row_sums(patch.faces_indices(), n, weight, d);
+  const std::vector<double>& g = patch.mean_spoke_lengths();
+
+  std::vector<Triplet> triplets;
+  laplacian_triplets(patch.faces_indices(), unknown, weight, triplets);
+  Factorized_system<typename Patch::Solver_traits> system;
+  Error_code status = system.factor(triplets, static_cast<int>(rows.size()));
+
+  std::vector<double> rhs(rows.size()), x;
+  for(std::size_t r = 0; r < rows.size(); ++r)
+  {
+    const std::size_t i = static_cast<std::size_t>(rows[r]);
+    rhs[r] = d[i] * g[i];
+  }
+  if(status == OK)
+    status = system.solve(rhs, x);
+  patch.add_statistics(system.statistics());
+  if(status != OK)
+    return status;
+  for(std::size_t r = 0; r < rows.size(); ++r)
+    values[static_cast<std::size_t>(rows[r])] = x[r];
+  return OK;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POISSON_DISTANCE_H

@@ -1,0 +1,122 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H
+
+// Step 3 of the method (METHOD.md section 3): the polar border map, placed as CGAL's
+// circular border parameterizers place theirs.
+
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+
+#include <CGAL/number_type_config.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+struct Polar_border
+{
+  std::vector<double> angles;          // phi_k in [0, 2 pi), phi_0 = 0, strictly increasing
+  std::vector<Eigen::Vector2d> uv;     // positions inside [0,1]^2
+  bool strictly_convex = false;
+};
+
+// Relative tolerance of the convexity test: a turn counts as convex when
+// cross(e_prev, e_next) < -convexity_tolerance * |e_prev| |e_next| (clockwise polygon).
+constexpr double convexity_tolerance = 1e-12;
+
+// Whether the closed polygon, traversed clockwise, turns strictly right at every vertex.
+inline bool is_strictly_convex_clockwise(const std::vector<Eigen::Vector2d>& p)
+{
+  const std::size_t m = p.size();
+  if(m < 3)
+    return false;
+  for(std::size_t k = 0; k < m; ++k)
+  {
+    const Eigen::Vector2d e1 = p[k] - p[(k + m - 1) % m];
+    const Eigen::Vector2d e2 = p[(k + 1) % m] - p[k];
+    const double cross = e1.x() * e2.y() - e1.y() * e2.x();
+    if(!(cross < -convexity_tolerance * e1.norm() * e2.norm()))
+      return false;
+  }
+  return true;
+}
+
+// For the loop b_0..b_{m-1} (patch.border()) around the center c:
+//   theta_k = angle in 3D between b_k - c and b_{k+1} - c,
+//   phi_k   = 2 pi (theta_0 + ... + theta_{k-1}) / (theta_0 + ... + theta_{m-1}),
+//   uv_k    = r_k (cos(-phi_k), sin(-phi_k))   (negative angles, as CGAL's circle),
+// then scaled uniformly and translated so that the bounding box is centered in [0,1]^2 with
+// its longest side spanning [0,1] (CGAL's circle: center (0.5,0.5), radius 0.5).
+template <class Patch>
+Error_code polar_border_map(const Patch& patch, std::size_t center,
+                            const std::vector<double>& radii, Polar_border& out)
+{
+  const std::vector<int>& border = patch.border();
+  const std::size_t m = border.size();
+  if(m < 3)
+    return ERROR_BORDER_TOO_SHORT;
+  if(radii.size() != m || center >= patch.number_of_vertices())
+    return ERROR_WRONG_PARAMETER;
+
+  const Eigen::Vector3d& c = patch.point(center);
+  std::vector<double> theta(m);
+  double total = 0.;
+  for(std::size_t k = 0; k < m; ++k)
+  {
+    const Eigen::Vector3d a = patch.point(static_cast<std::size_t>(border[k])) - c;
+    const Eigen::Vector3d b = patch.point(static_cast<std::size_t>(border[(k + 1) % m])) - c;
+    theta[k] = std::atan2(a.cross(b).norm(), a.dot(b));
+    if(!(theta[k] > 0.))   // same direction (or a zero vector): not strictly monotone
+      return ERROR_DEGENERATE_BORDER_MAP;
+    total += theta[k];
+  }
+  if(!std::isfinite(total))
+    return ERROR_DEGENERATE_BORDER_MAP;
+  for(double r : radii)
+    if(!(r > 0.) || !std::isfinite(r))
+      return ERROR_DEGENERATE_BORDER_MAP;
+
+  out.angles.resize(m);
+  out.uv.resize(m);
+  double sum = 0.;
+  Eigen::Vector2d lo(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  for(std::size_t k = 0; k < m; ++k)
+  {
+    const double phi = 2. * CGAL_PI * sum / total;
+    sum += theta[k];
+    out.angles[k] = phi;
+    out.uv[k] = Eigen::Vector2d(radii[k] * std::cos(-phi), radii[k] * std::sin(-phi));
+    lo = lo.cwiseMin(out.uv[k]);
+    hi = hi.cwiseMax(out.uv[k]);
+  }
+  const double extent = (std::max)(hi.x() - lo.x(), hi.y() - lo.y());
+  if(!(extent > 0.) || !std::isfinite(extent))
+    return ERROR_DEGENERATE_BORDER_MAP;
+  const Eigen::Vector2d mid = 0.5 * (lo + hi);
+  for(Eigen::Vector2d& p : out.uv)
+  {
+    p = Eigen::Vector2d(0.5, 0.5) + (p - mid) / extent;
+    p = p.cwiseMax(Eigen::Vector2d(0., 0.)).cwiseMin(Eigen::Vector2d(1., 1.));  // rounding only
+  }
+  out.strictly_convex = is_strictly_convex_clockwise(out.uv);
+  return OK;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H

@@ -1,0 +1,177 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SPARSE_SOLVER_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SPARSE_SOLVER_H
+
+// Factor once, back-substitute many times, through CGAL's
+// `SparseLinearAlgebraWithFactorTraits_d` concept (for example `CGAL::Eigen_solver_traits`).
+
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Eigen_solver_traits.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+/// The default sparse solver of this package: Eigen's simplicial LDLT Cholesky
+/// factorization, through CGAL's `Eigen_solver_traits` (a model of
+/// `SparseLinearAlgebraWithFactorTraits_d`).
+typedef CGAL::Eigen_solver_traits<
+          Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >
+        Default_sparse_cholesky_traits;
+
+namespace internal {
+
+typedef Eigen::Triplet<double, int> Triplet;
+
+template <class SolverTraits>
+struct Get_solver_traits
+{
+  typedef typename CGAL::Default::Get<SolverTraits, Default_sparse_cholesky_traits>::type type;
+};
+
+// Detects matrices that wrap an `Eigen::SparseMatrix<double>` (CGAL's `Eigen_sparse_matrix`),
+// which can be filled without keeping a second copy of the triplets alive.
+template <class Matrix, class = void>
+struct Wraps_eigen_sparse_matrix : std::false_type {};
+
+template <class Matrix>
+struct Wraps_eigen_sparse_matrix<Matrix,
+  std::void_t<decltype(std::declval<Matrix&>().eigen_object())> >
+  : std::is_same<std::decay_t<decltype(std::declval<Matrix&>().eigen_object())>,
+                 Eigen::SparseMatrix<double> > {};
+
+// Fills `A` (n x n, zero) with the sum of the triplets, then releases the triplets' memory.
+template <class Matrix>
+void fill_matrix(Matrix& A, std::vector<Triplet>& triplets, int n)
+{
+  if constexpr(Wraps_eigen_sparse_matrix<Matrix>::value)
+  {
+    Eigen::SparseMatrix<double> M(n, n);
+    M.setFromTriplets(triplets.begin(), triplets.end());
+    std::vector<Triplet>().swap(triplets);
+    M.makeCompressed();
+    A.eigen_object().swap(M);
+  }
+  else
+  {
+    for(const Triplet& t : triplets)
+      A.add_coef(t.row(), t.col(), t.value());
+    std::vector<Triplet>().swap(triplets);
+  }
+}
+
+// Counters of the numerical work, to check and report reuse of factorizations.
+struct Solver_statistics
+{
+  int factorizations = 0;
+  int back_substitutions = 0;
+  double factorization_seconds = 0.;
+  double back_substitution_seconds = 0.;
+
+  void add(const Solver_statistics& o)
+  {
+    factorizations += o.factorizations;
+    back_substitutions += o.back_substitutions;
+    factorization_seconds += o.factorization_seconds;
+    back_substitution_seconds += o.back_substitution_seconds;
+  }
+};
+
+// A symmetric positive definite system factorized once. The matrix lives on the heap because
+// `Eigen_solver_traits` keeps a pointer to it: moving this object keeps that pointer valid.
+// Each system default-constructs its own traits: copies of `Eigen_solver_traits` share one
+// solver object, so two systems built from copies of one traits object would overwrite each
+// other's factorization.
+template <class SolverTraits>
+class Factorized_system
+{
+public:
+  typedef SolverTraits                       Solver_traits;
+  typedef typename Solver_traits::Matrix     Matrix;
+  typedef typename Solver_traits::Vector     Vector;
+
+  Factorized_system() = default;
+
+  bool is_factorized() const { return m_factorized; }
+  int size() const { return m_n; }
+  const Solver_statistics& statistics() const { return m_stats; }
+
+  // Factorizes the n x n matrix given as triplets (duplicates are summed). Releases them.
+  Error_code factor(std::vector<Triplet>& triplets, int n)
+  {
+    typedef std::chrono::steady_clock Clock;
+    m_factorized = false;
+    m_n = n;
+    m_matrix = std::make_unique<Matrix>(n, n);
+    fill_matrix(*m_matrix, triplets, n);
+
+    const Clock::time_point start = Clock::now();
+    double D = 1.;
+    const bool ok = m_traits.factor(*m_matrix, D);
+    m_stats.factorization_seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    ++m_stats.factorizations;
+    if(!ok || D != 1.)
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    m_factorized = true;
+    return OK;
+  }
+
+  // Solves A x = b with the factorization. Fails when the result is not finite.
+  Error_code solve(const std::vector<double>& b, std::vector<double>& x)
+  {
+    typedef std::chrono::steady_clock Clock;
+    if(!m_factorized || static_cast<int>(b.size()) != m_n)
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+
+    Vector B(m_n), X(m_n);
+    for(int i = 0; i < m_n; ++i)
+      B[i] = b[static_cast<std::size_t>(i)];
+
+    const Clock::time_point start = Clock::now();
+    const bool ok = m_traits.linear_solver(B, X);
+    m_stats.back_substitution_seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    ++m_stats.back_substitutions;
+    if(!ok)
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+
+    x.resize(static_cast<std::size_t>(m_n));
+    for(int i = 0; i < m_n; ++i)
+    {
+      const double xi = X[i];
+      if(!std::isfinite(xi))
+        return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      x[static_cast<std::size_t>(i)] = xi;
+    }
+    return OK;
+  }
+
+private:
+  Solver_traits m_traits;
+  std::unique_ptr<Matrix> m_matrix;
+  int m_n = 0;
+  bool m_factorized = false;
+  Solver_statistics m_stats;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SPARSE_SOLVER_H

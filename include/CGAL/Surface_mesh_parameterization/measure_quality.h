@@ -1,0 +1,236 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURE_QUALITY_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURE_QUALITY_H
+
+/// \file measure_quality.h
+/// Distortion figures of a parameterization, with the definitions of METHOD.md section 5.
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/number_type_config.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// Distortion figures of a piecewise linear map from a 3D triangle mesh to the plane.
+/// For each face, `J` is the Jacobian of the map from the 3D triangle to its UV triangle and
+/// `s1 >= s2` its singular values. Every figure is finite or `+infinity` (a UV triangle of
+/// zero area), never NaN.
+struct Parameterization_quality
+{
+  /// The paper's "conformal distortion" (Sheffer and de Sturler's angle error):
+  /// \f$ \frac{1}{|V|}\sum_{\text{corners}} ((\alpha - \varphi)/\varphi)^2 \f$ where
+  /// \f$ \alpha \f$ is the UV corner angle and \f$ \varphi \f$ ABF's optimal angle: the 3D
+  /// corner angle, scaled at interior vertices so that the angles around the vertex sum to
+  /// \f$ 2\pi \f$ (unchanged at border vertices). 0 for a conformal map of a flat mesh.
+  double angle_distortion = 0.;
+  /// Mean over all corners of \f$ ((\alpha - \beta)/\beta)^2 \f$, \f$ \beta \f$ the 3D angle.
+  double angle_distortion_per_corner = 0.;
+  /// Area-weighted (3D area) mean of \f$ s_1/s_2 \f$ (1 = conformal).
+  double quasi_conformal_mean = 1.;
+  /// Maximum of \f$ s_1/s_2 \f$.
+  double quasi_conformal_max = 1.;
+  /// Sander et al.'s \f$ L^2 \f$ stretch of the UV-to-3D map, normalised so that 1 is optimal:
+  /// \f$ \sqrt{\sum_T A_T (\Gamma_T^2+\gamma_T^2)/2 / \sum_T A_T} \cdot
+  /// \sqrt{\sum_T A^{uv}_T / \sum_T A_T} \f$ with \f$ \Gamma = 1/s_2 \f$, \f$ \gamma = 1/s_1 \f$
+  /// and \f$ A_T \f$ the 3D area.
+  double l2_stretch = 1.;
+  /// Sander et al.'s \f$ L^\infty \f$ stretch, \f$ \max_T \Gamma_T \f$, same normalisation.
+  double linf_stretch = 1.;
+  /// Area-weighted mean of \f$ |\log(A^{uv}_T / A_T)| \f$ after scaling the UV areas to the
+  /// same total as the 3D areas.
+  double area_distortion_mean = 0.;
+  /// Maximum of \f$ |\log(A^{uv}_T / A_T)| \f$, same normalisation.
+  double area_distortion_max = 0.;
+  /// Number of faces whose signed UV area is \f$ \le 0 \f$.
+  std::size_t flipped_faces = 0;
+  /// Number of faces measured.
+  std::size_t number_of_faces = 0;
+  /// Number of distinct vertices of the measured faces.
+  std::size_t number_of_vertices = 0;
+};
+
+namespace internal {
+
+inline double corner_angle_3(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+inline double corner_angle_2(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+{
+  return std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
+}
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// measures the map given by `uvmap` on the faces of `face_range` (triangles), for example
+/// `faces(tm)`.
+/// A vertex is *interior* when `CGAL::is_border(v, tm)` is empty.
+///
+/// \tparam FaceRange a range of `face_descriptor`.
+/// \tparam VertexUVMap a model of `ReadablePropertyMap` from `vertex_descriptor` to a 2D
+///         point type with `x()` and `y()`.
+/// \param np optional named parameter `vertex_point_map`.
+template <class TriangleMesh, class FaceRange, class VertexUVMap,
+          class NamedParameters = parameters::Default_named_parameters>
+Parameterization_quality measure_quality(const TriangleMesh& tm,
+                                         const FaceRange& face_range,
+                                         VertexUVMap uvmap,
+                                         const NamedParameters& np = parameters::default_values())
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor   vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor     face_descriptor;
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<double> >::const_type Angle_map;
+
+  const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                                get_const_property_map(vertex_point, tm));
+  const double inf = std::numeric_limits<double>::infinity();
+
+  struct Corners
+  {
+    std::array<vertex_descriptor, 3> v;
+    std::array<Eigen::Vector3d, 3> p;
+    std::array<Eigen::Vector2d, 3> q;
+  };
+  auto corners_of = [&](face_descriptor f) {
+    Corners c;
+    int k = 0;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
+    {
+      if(k == 3)
+        break;
+      c.v[k] = target(h, tm);
+      const auto& p = get(vpm, c.v[k]);
+      c.p[k] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      const auto& q = get(uvmap, c.v[k]);
+      c.q[k] = Eigen::Vector2d(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+      ++k;
+    }
+    return c;
+  };
+
+  // Pass 1: 3D angle sums per vertex (a value < 0 marks "not seen yet"), total areas.
+  Angle_map angle_sum = get(CGAL::dynamic_vertex_property_t<double>(), tm);
+  for(face_descriptor f : face_range)
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
+      put(angle_sum, target(h, tm), -1.);
+
+  Parameterization_quality q;
+  double area3 = 0., area_uv = 0.;
+  for(face_descriptor f : face_range)
+  {
+    const Corners c = corners_of(f);
+    ++q.number_of_faces;
+    for(int k = 0; k < 3; ++k)
+    {
+      double s = get(angle_sum, c.v[k]);
+      if(s < 0.)
+      {
+        s = 0.;
+        ++q.number_of_vertices;
+      }
+      put(angle_sum, c.v[k], s + internal::corner_angle_3(c.p[(k + 1) % 3] - c.p[k], c.p[(k + 2) % 3] - c.p[k]));
+    }
+    area3 += 0.5 * (c.p[1] - c.p[0]).cross(c.p[2] - c.p[0]).norm();
+    const Eigen::Vector2d e1 = c.q[1] - c.q[0], e2 = c.q[2] - c.q[0];
+    area_uv += 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+  }
+  if(q.number_of_faces == 0)
+    return q;
+
+  // Pass 2: per-face figures.
+  const double uv_scale2 = (area_uv > 0.) ? area3 / area_uv : inf;  // UV area -> 3D area scale
+  double angle_sum_paper = 0., angle_sum_corner = 0., qc_sum = 0., l2_sum = 0., area_log_sum = 0.;
+  double max_G = 0.;
+  for(face_descriptor f : face_range)
+  {
+    const Corners c = corners_of(f);
+    for(int k = 0; k < 3; ++k)
+    {
+      const double beta = internal::corner_angle_3(c.p[(k + 1) % 3] - c.p[k], c.p[(k + 2) % 3] - c.p[k]);
+      const double alpha = internal::corner_angle_2(c.q[(k + 1) % 3] - c.q[k], c.q[(k + 2) % 3] - c.q[k]);
+      double phi = beta;
+      const double sum = get(angle_sum, c.v[k]);
+      if(!CGAL::is_border(c.v[k], tm) && sum > 0.)
+        phi *= 2. * CGAL_PI / sum;
+      if(phi > 0.)
+        angle_sum_paper += ((alpha - phi) / phi) * ((alpha - phi) / phi);
+      if(beta > 0.)
+        angle_sum_corner += ((alpha - beta) / beta) * ((alpha - beta) / beta);
+    }
+
+    // Jacobian of 3D -> UV in an orthonormal frame of the 3D triangle.
+    const Eigen::Vector3d a = c.p[1] - c.p[0], b = c.p[2] - c.p[0];
+    const double la = a.norm();
+    const double A3 = 0.5 * a.cross(b).norm();
+    const Eigen::Vector2d e1 = c.q[1] - c.q[0], e2 = c.q[2] - c.q[0];
+    const double signed_uv = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
+    if(!(signed_uv > 0.))
+      ++q.flipped_faces;
+    if(!(A3 > 0.) || !(la > 0.))
+      continue;  // degenerate 3D face: no Jacobian, no weight
+    const double bx = a.dot(b) / la, by = 2. * A3 / la;        // P = [[la, bx], [0, by]]
+    // J = Q P^{-1}, P^{-1} = [[1/la, -bx/(la by)], [0, 1/by]]
+    const double j00 = e1.x() / la, j10 = e1.y() / la;
+    const double j01 = (e2.x() - j00 * bx) / by, j11 = (e2.y() - j10 * bx) / by;
+    const double E = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11;
+    const double det = std::abs(j00 * j11 - j01 * j10);
+    const double disc = std::sqrt((std::max)(0., E * E - 4. * det * det));
+    const double s1 = std::sqrt(0.5 * (E + disc));
+    const double s2 = (s1 > 0.) ? det / s1 : 0.;
+    const double qc = (s2 > 0.) ? s1 / s2 : inf;
+    const double G = (s2 > 0.) ? 1. / s2 : inf;
+    const double g = (s1 > 0.) ? 1. / s1 : inf;
+    qc_sum += A3 * qc;
+    q.quasi_conformal_max = (std::max)(q.quasi_conformal_max, qc);
+    l2_sum += A3 * 0.5 * (G * G + g * g);
+    max_G = (std::max)(max_G, G);
+    const double ratio = std::abs(signed_uv) * uv_scale2 / A3;
+    const double log_ratio = (ratio > 0.) ? std::abs(std::log(ratio)) : inf;
+    area_log_sum += A3 * log_ratio;
+    q.area_distortion_max = (std::max)(q.area_distortion_max, log_ratio);
+  }
+
+  q.angle_distortion = angle_sum_paper / double(q.number_of_vertices);
+  q.angle_distortion_per_corner = angle_sum_corner / double(3 * q.number_of_faces);
+  if(area3 > 0.)
+  {
+    const double norm = (area_uv > 0.) ? std::sqrt(area_uv / area3) : 0.;
+    q.quasi_conformal_mean = qc_sum / area3;
+    q.l2_stretch = (norm > 0.) ? std::sqrt(l2_sum / area3) * norm : inf;
+    q.linf_stretch = (norm > 0.) ? max_G * norm : inf;
+    q.area_distortion_mean = area_log_sum / area3;
+  }
+  return q;
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURE_QUALITY_H
