@@ -108,6 +108,11 @@ public:
     std::vector<double> border_distances;
     /// polar angle `phi_k` in `[0, 2 pi)` of each border vertex (the UV angle is `-phi_k`)
     std::vector<double> border_angles;
+    /// UV position of the polar origin: border vertex `k` is at
+    /// `polar_origin + polar_scale * border_distances[k] * (cos(-phi_k), sin(-phi_k))`
+    Eigen::Vector2d polar_origin = Eigen::Vector2d(0.5, 0.5);
+    /// UV length per unit of distance
+    double polar_scale = 1.;
     /// whether the border polygon was verified strictly convex
     bool strictly_convex = false;
     /// factorizations and back-substitutions done by the call
@@ -191,6 +196,8 @@ public:
         record.border_vertices.push_back(patch.vertex(static_cast<std::size_t>(b)));
       record.border_distances = distances;
       record.border_angles = polar.angles;
+      record.polar_origin = polar.origin;
+      record.polar_scale = polar.scale;
       record.strictly_convex = polar.strictly_convex;
       uv = polar.uv;
     }

@@ -43,7 +43,8 @@ inline constexpr Error_code ERROR_INVALID_BORDER_HALFEDGE = static_cast<Error_co
 /// border vertex (for example a straightest geodesic that does not reach it).
 inline constexpr Error_code ERROR_DISTANCE_COMPUTATION_FAILED = static_cast<Error_code>(14);
 /// The polar border map is degenerate: two consecutive border vertices are seen in the
-/// same direction from the center, or a border distance is not a positive finite number.
+/// same direction from the center (polar angles less than 1e-12 rad apart), or a border
+/// distance is not a positive finite number.
 inline constexpr Error_code ERROR_DEGENERATE_BORDER_MAP = static_cast<Error_code>(15);
 
 /// @}

@@ -379,8 +379,8 @@ private:
     for(halfedge_descriptor h : halfedges_around_face(bhd, tm))
     {
       const int id = index(source(h, tm));
-      if(id < 0)
-        return ERROR_INVALID_BORDER_HALFEDGE;
+      if(id < 0)  // the loop leaves the component through a pinched vertex
+        return ERROR_NO_TOPOLOGICAL_DISC;
       if(m_interior_index[static_cast<std::size_t>(id)] < 0)  // second visit: pinched loop
         return ERROR_NO_TOPOLOGICAL_DISC;
       m_interior_index[static_cast<std::size_t>(id)] = -1;

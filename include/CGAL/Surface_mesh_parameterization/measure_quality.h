@@ -199,11 +199,11 @@ Parameterization_quality measure_quality(const TriangleMesh& tm,
     // J = Q P^{-1}, P^{-1} = [[1/la, -bx/(la by)], [0, 1/by]]
     const double j00 = e1.x() / la, j10 = e1.y() / la;
     const double j01 = (e2.x() - j00 * bx) / by, j11 = (e2.y() - j10 * bx) / by;
-    const double E = j00 * j00 + j01 * j01 + j10 * j10 + j11 * j11;
-    const double det = std::abs(j00 * j11 - j01 * j10);
-    const double disc = std::sqrt((std::max)(0., E * E - 4. * det * det));
-    const double s1 = std::sqrt(0.5 * (E + disc));
-    const double s2 = (s1 > 0.) ? det / s1 : 0.;
+    // singular values of [[j00, j01], [j10, j11]] without cancellation near s1 = s2:
+    // s1,2 = (|(j00 + j11, j10 - j01)| +- |(j00 - j11, j10 + j01)|) / 2
+    const double p = std::hypot(j00 + j11, j10 - j01), r = std::hypot(j00 - j11, j10 + j01);
+    const double s1 = 0.5 * (p + r);
+    const double s2 = 0.5 * std::abs(p - r);
     const double qc = (s2 > 0.) ? s1 / s2 : inf;
     const double G = (s2 > 0.) ? 1. / s2 : inf;
     const double g = (s1 > 0.) ? 1. / s1 : inf;

@@ -29,8 +29,16 @@ struct Polar_border
 {
   std::vector<double> angles;          // phi_k in [0, 2 pi), phi_0 = 0, strictly increasing
   std::vector<Eigen::Vector2d> uv;     // positions inside [0,1]^2
+  Eigen::Vector2d origin = Eigen::Vector2d(0.5, 0.5);  // UV of the polar origin (the center)
+  double scale = 1.;                   // UV length per unit of distance: uv = origin + scale r (cos, sin)
   bool strictly_convex = false;
 };
+
+// Smallest polar angle increment (radians, after normalisation to a full turn) between two
+// consecutive border vertices: below it the two are taken as seen in the same direction
+// from the center (for example both sides of a slit that points at the center), and the
+// polygon would not be star-shaped.
+constexpr double min_angle_increment = 1e-12;
 
 // Relative tolerance of the convexity test: a turn counts as convex when
 // cross(e_prev, e_next) < -convexity_tolerance * |e_prev| |e_next| (clockwise polygon).
@@ -78,12 +86,13 @@ Error_code polar_border_map(const Patch& patch, std::size_t center,
     const Eigen::Vector3d a = patch.point(static_cast<std::size_t>(border[k])) - c;
     const Eigen::Vector3d b = patch.point(static_cast<std::size_t>(border[(k + 1) % m])) - c;
     theta[k] = std::atan2(a.cross(b).norm(), a.dot(b));
-    if(!(theta[k] > 0.))   // same direction (or a zero vector): not strictly monotone
-      return ERROR_DEGENERATE_BORDER_MAP;
     total += theta[k];
   }
-  if(!std::isfinite(total))
+  if(!(total > 0.) || !std::isfinite(total))
     return ERROR_DEGENERATE_BORDER_MAP;
+  for(double t : theta)  // same direction (or a zero vector): not strictly monotone
+    if(!(2. * CGAL_PI * t / total > min_angle_increment))
+      return ERROR_DEGENERATE_BORDER_MAP;
   for(double r : radii)
     if(!(r > 0.) || !std::isfinite(r))
       return ERROR_DEGENERATE_BORDER_MAP;
@@ -106,6 +115,8 @@ Error_code polar_border_map(const Patch& patch, std::size_t center,
   if(!(extent > 0.) || !std::isfinite(extent))
     return ERROR_DEGENERATE_BORDER_MAP;
   const Eigen::Vector2d mid = 0.5 * (lo + hi);
+  out.scale = 1. / extent;
+  out.origin = Eigen::Vector2d(0.5, 0.5) - mid / extent;
   for(Eigen::Vector2d& p : out.uv)
   {
     p = Eigen::Vector2d(0.5, 0.5) + (p - mid) / extent;

@@ -1,0 +1,218 @@
+// Shared helpers of the test suites: generated meshes with known geometry, and the location
+// of the real meshes (../shared/data/meshes, or CGAL's data meshes as a fallback).
+
+#ifndef MBP_TEST_SUPPORT_H
+#define MBP_TEST_SUPPORT_H
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/number_type_config.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mbp_test {
+
+// ---------------------------------------------------------------- real meshes
+
+inline std::string mesh_dir() { return MBP_MESH_DIR; }
+// "shared" (../shared/data/meshes), "cgal" (CGAL's data meshes) or "none"
+inline std::string mesh_set() { return MBP_MESH_SET; }
+
+inline bool file_exists(const std::string& path)
+{
+  std::ifstream in(path);
+  return in.good();
+}
+
+// Path of a real mesh; fails the test (never skips silently) when it is missing.
+inline std::string require_mesh(const std::string& name)
+{
+  BOOST_REQUIRE_MESSAGE(mesh_set() != "none",
+                        "no real meshes: neither ../shared/data/meshes nor CGAL's data.tar.gz");
+  const std::string path = mesh_dir() + "/" + name;
+  BOOST_REQUIRE_MESSAGE(file_exists(path), "missing test mesh " << path);
+  return path;
+}
+
+template <class Mesh>
+void read_mesh(const std::string& path, Mesh& mesh)
+{
+  BOOST_REQUIRE_MESSAGE(CGAL::IO::read_polygon_mesh(path, mesh), "cannot read " << path);
+  BOOST_REQUIRE(!faces(mesh).empty());
+}
+
+template <class Mesh>
+typename boost::graph_traits<Mesh>::halfedge_descriptor longest_border(const Mesh& mesh)
+{
+  return CGAL::Polygon_mesh_processing::longest_border(mesh).first;
+}
+
+// ---------------------------------------------------------------- generated meshes
+
+struct Soup
+{
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::vector<std::size_t> > faces;
+};
+
+// A polar grid of the disk of radius 1: the center (vertex 0), `rings` rings of `spokes`
+// vertices at radius k/rings, and one extra vertex in the middle of every quad between two
+// rings, which is split into four triangles. With `spokes` divisible by 4 the mesh is
+// symmetric under x -> -x and y -> -y. Then x is scaled by `a`, y by `b`, and z = height(x, y).
+inline Soup polar_disk(int rings, int spokes, double a = 1., double b = 1.,
+                       const std::function<double(double, double)>& height = nullptr)
+{
+  Soup s;
+  auto add = [&](double r, double angle) {
+    const double x = a * r * std::cos(angle), y = b * r * std::sin(angle);
+    s.points.push_back({x, y, height ? height(x, y) : 0.});
+    return s.points.size() - 1;
+  };
+  add(0., 0.);
+  std::vector<std::vector<std::size_t> > ring(static_cast<std::size_t>(rings) + 1);
+  ring[0].assign(static_cast<std::size_t>(spokes), 0);
+  const double step = 2. * CGAL_PI / spokes;
+  for(int k = 1; k <= rings; ++k)
+    for(int j = 0; j < spokes; ++j)
+      ring[static_cast<std::size_t>(k)].push_back(add(double(k) / rings, j * step));
+  for(int j = 0; j < spokes; ++j)
+  {
+    const std::size_t jn = static_cast<std::size_t>((j + 1) % spokes), jj = static_cast<std::size_t>(j);
+    s.faces.push_back({0, ring[1][jj], ring[1][jn]});
+    for(int k = 1; k < rings; ++k)
+    {
+      const std::size_t m = add((k + 0.5) / rings, (j + 0.5) * step);
+      const std::size_t A = ring[static_cast<std::size_t>(k)][jj], B = ring[static_cast<std::size_t>(k) + 1][jj];
+      const std::size_t C = ring[static_cast<std::size_t>(k) + 1][jn], D = ring[static_cast<std::size_t>(k)][jn];
+      s.faces.push_back({A, B, m});
+      s.faces.push_back({B, C, m});
+      s.faces.push_back({C, D, m});
+      s.faces.push_back({D, A, m});
+    }
+  }
+  return s;
+}
+
+// A quasi-uniform disk: the triangular lattice inside the hexagon of `rings` rings, each
+// lattice ring pushed radially onto the circle of radius k/rings. Every interior vertex has
+// degree 6; the mesh is symmetric under x -> -x and y -> -y. Then x is scaled by `a`, y by `b`.
+// Vertex 0 is the center.
+inline Soup hex_disk(int rings, double a = 1., double b = 1.)
+{
+  Soup s;
+  std::vector<std::vector<long> > id(static_cast<std::size_t>(2 * rings + 1),
+                                     std::vector<long>(static_cast<std::size_t>(2 * rings + 1), -1));
+  auto ring_of = [](int q, int r) { return (std::abs(q) + std::abs(r) + std::abs(q + r)) / 2; };
+  auto index = [&](int q, int r) -> long& {
+    return id[static_cast<std::size_t>(q + rings)][static_cast<std::size_t>(r + rings)];
+  };
+  auto add = [&](int q, int r) {
+    const double x = q + 0.5 * r, y = 0.5 * std::sqrt(3.) * r;
+    const int k = ring_of(q, r);
+    const double scale = (k == 0) ? 0. : (double(k) / rings) / std::sqrt(x * x + y * y);
+    index(q, r) = static_cast<long>(s.points.size());
+    s.points.push_back({a * scale * x, b * scale * y, 0.});
+  };
+  add(0, 0);
+  for(int q = -rings; q <= rings; ++q)
+    for(int r = -rings; r <= rings; ++r)
+      if((q != 0 || r != 0) && ring_of(q, r) <= rings)
+        add(q, r);
+  auto inside = [&](int q, int r) {
+    return q >= -rings && q <= rings && r >= -rings && r <= rings && ring_of(q, r) <= rings;
+  };
+  for(int q = -rings; q < rings; ++q)
+    for(int r = -rings; r < rings; ++r)
+    {
+      if(inside(q, r) && inside(q + 1, r) && inside(q, r + 1))
+        s.faces.push_back({std::size_t(index(q, r)), std::size_t(index(q + 1, r)), std::size_t(index(q, r + 1))});
+      if(inside(q + 1, r) && inside(q + 1, r + 1) && inside(q, r + 1))
+        s.faces.push_back({std::size_t(index(q + 1, r)), std::size_t(index(q + 1, r + 1)), std::size_t(index(q, r + 1))});
+    }
+  return s;
+}
+
+// A flat L-shaped domain, [0,2]^2 minus (1,2]^2, on a grid of step 1/n, every square split
+// along the same diagonal. Seen from any interior point, its border is far from convex.
+inline Soup l_shape(int n = 8)
+{
+  Soup s;
+  std::vector<std::vector<long> > id(static_cast<std::size_t>(2 * n + 1),
+                                     std::vector<long>(static_cast<std::size_t>(2 * n + 1), -1));
+  auto kept = [n](int i, int j) { return !(i > n && j > n); };
+  for(int i = 0; i <= 2 * n; ++i)
+    for(int j = 0; j <= 2 * n; ++j)
+      if(kept(i, j))
+      {
+        id[std::size_t(i)][std::size_t(j)] = static_cast<long>(s.points.size());
+        s.points.push_back({double(i) / n, double(j) / n, 0.});
+      }
+  for(int i = 0; i < 2 * n; ++i)
+    for(int j = 0; j < 2 * n; ++j)
+      if(!(i >= n && j >= n))
+      {
+        const std::size_t a = std::size_t(id[std::size_t(i)][std::size_t(j)]);
+        const std::size_t b = std::size_t(id[std::size_t(i + 1)][std::size_t(j)]);
+        const std::size_t c = std::size_t(id[std::size_t(i + 1)][std::size_t(j + 1)]);
+        const std::size_t d = std::size_t(id[std::size_t(i)][std::size_t(j + 1)]);
+        s.faces.push_back({a, b, c});
+        s.faces.push_back({a, c, d});
+      }
+  return s;
+}
+
+// A curved, asymmetric disk: the polar grid lifted onto a smooth bump.
+inline Soup bumpy_disk(int rings = 8, int spokes = 24)
+{
+  return polar_disk(rings, spokes, 1.3, 0.9, [](double x, double y) {
+    return 0.35 * x * x - 0.2 * y + 0.25 * x * y + 0.1 * std::sin(3. * x);
+  });
+}
+
+// A torus (grid of n x m quads split in two) with one face removed: open, genus 1.
+inline Soup punctured_torus(int n = 12, int m = 8)
+{
+  Soup s;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j)
+    {
+      const double u = 2. * CGAL_PI * i / n, v = 2. * CGAL_PI * j / m;
+      s.points.push_back({(2. + 0.7 * std::cos(v)) * std::cos(u), (2. + 0.7 * std::cos(v)) * std::sin(u),
+                          0.7 * std::sin(v)});
+    }
+  auto id = [&](int i, int j) { return static_cast<std::size_t>(((i + n) % n) * m + (j + m) % m); };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j)
+    {
+      s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      if(i != 0 || j != 0)
+        s.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+template <class Mesh>
+void soup_to_mesh(const Soup& soup, Mesh& mesh)
+{
+  typedef typename boost::property_traits<
+    typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point_3;
+  std::vector<Point_3> points;
+  for(const auto& p : soup.points)
+    points.emplace_back(p[0], p[1], p[2]);
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.faces, mesh);
+  BOOST_REQUIRE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+} // namespace mbp_test
+
+#endif // MBP_TEST_SUPPORT_H
