@@ -1,0 +1,44 @@
+/*!
+\ingroup PkgSurfaceMeshParameterizationConcepts
+\cgalConcept
+
+A border distance measures a distance from the center vertex to every vertex of the border
+loop (step 2 of the method); these distances become the radii of the polar border map. It
+works on a `CGAL::Surface_mesh_parameterization::Parameterization_patch_3` (see
+`MeasuredCenterLocator`).
+
+Every distance must be a positive finite number. A model that cannot measure some border
+vertex (for example a straightest geodesic that does not reach it) returns
+`ERROR_DISTANCE_COMPUTATION_FAILED` instead of a wrong value.
+
+\cgalHasModel `CGAL::Surface_mesh_parameterization::Poisson_border_distance<TriangleMesh>`
+
+\sa `MeasuredCenterLocator`
+\sa `CGAL::Surface_mesh_parameterization::Measured_border_parameterizer_3`
+*/
+class MeasuredBorderDistance
+{
+public:
+  /// \name Creation
+  /// @{
+
+  /// Copy constructor (parameterizers store their policies by value).
+  MeasuredBorderDistance(const MeasuredBorderDistance&);
+
+  /// @}
+
+  /// \name Operations
+  /// @{
+
+  /// resizes `distances` to `patch.border().size()` and stores in `distances[k]` the
+  /// distance from the vertex of patch index `center` to the border vertex of patch index
+  /// `patch.border()[k]`.
+  ///
+  /// \tparam Patch an instance of `CGAL::Surface_mesh_parameterization::Parameterization_patch_3`.
+  /// \return `OK` on success, otherwise an `Error_code` saying why.
+  template <class Patch>
+  Error_code compute_border_distances(Patch& patch, std::size_t center,
+                                      std::vector<double>& distances) const;
+
+  /// @}
+};

@@ -1,0 +1,42 @@
+// Uses the installed headers: the measured border inside CGAL's DCP on a small generated disk.
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <cmath>
+#include <iostream>
+
+typedef CGAL::Simple_cartesian<double> K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+int main()
+{
+  // a fan of 12 triangles around a raised center, then a ring of 24 outer vertices
+  Mesh m;
+  std::vector<Mesh::Vertex_index> inner, outer;
+  const Mesh::Vertex_index c = m.add_vertex(K::Point_3(0, 0, 0.3));
+  for(int j = 0; j < 12; ++j)
+    inner.push_back(m.add_vertex(K::Point_3(0.5 * std::cos(j * CGAL_PI / 6), 0.5 * std::sin(j * CGAL_PI / 6), 0.1)));
+  for(int j = 0; j < 12; ++j)
+    outer.push_back(m.add_vertex(K::Point_3(std::cos(j * CGAL_PI / 6), 1.5 * std::sin(j * CGAL_PI / 6), 0.)));
+  for(int j = 0; j < 12; ++j)
+  {
+    const int n = (j + 1) % 12;
+    m.add_face(c, inner[j], inner[n]);
+    m.add_face(inner[j], outer[j], outer[n]);
+    m.add_face(inner[j], outer[n], inner[n]);
+  }
+  auto uv = m.add_property_map<Mesh::Vertex_index, K::Point_2>("v:uv").first;
+  Mesh::Halfedge_index bhd;
+  for(auto h : m.halfedges())
+    if(m.is_border(h))
+      bhd = h;
+  SMP::Measured_border_parameterizer_3<Mesh> border;
+  SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Measured_border_parameterizer_3<Mesh> > dcp(border);
+  const SMP::Error_code status = SMP::parameterize(m, dcp, bhd, uv);
+  std::cout << SMP::get_measured_error_message(status) << ", center " << border.center() << "\n";
+  return (status == SMP::OK && border.center() == c) ? 0 : 1;
+}
