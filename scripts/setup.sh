@@ -13,6 +13,8 @@ packages=(
   libeigen3-dev          # Eigen 3.4
   libgmp-dev libmpfr-dev # CGAL's exact number types
   libboost-dev libboost-graph-dev libboost-test-dev
+  libsuitesparse-dev     # CHOLMOD's supernodal Cholesky (optional solver)
+  libopenblas-dev        # a multithreaded BLAS for CHOLMOD
 )
 
 missing=()

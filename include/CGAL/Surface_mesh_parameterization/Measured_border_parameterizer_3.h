@@ -20,12 +20,43 @@
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <chrono>
 #include <cstddef>
+#include <future>
 #include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
+
+namespace internal {
+
+// Whether a border distance policy has the optional `prepare(patch)` step.
+template <class Policy, class Patch, class = void>
+struct Has_prepare : std::false_type {};
+
+template <class Policy, class Patch>
+struct Has_prepare<Policy, Patch,
+  std::void_t<decltype(std::declval<const Policy&>().prepare(std::declval<Patch&>()))> >
+  : std::true_type {};
+
+// Solver traits may define a `Concurrent_section` type: an object of it is held while two
+// factorizations run concurrently (for example to keep a threaded BLAS on one thread each).
+template <class SolverTraits, class = void>
+struct Concurrent_section
+{
+  struct type {};
+};
+
+template <class SolverTraits>
+struct Concurrent_section<SolverTraits, std::void_t<typename SolverTraits::Concurrent_section> >
+{
+  typedef typename SolverTraits::Concurrent_section type;
+};
+
+} // namespace internal
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
 ///
@@ -117,6 +148,8 @@ public:
     bool strictly_convex = false;
     /// factorizations and back-substitutions done by the call
     typename Patch::Statistics statistics;
+    /// wall-clock seconds of step 1 (center), step 2 (distances) and step 3 (polar map)
+    double center_seconds = 0., distance_seconds = 0., border_map_seconds = 0.;
   };
 
   /// creates a border parameterizer with the given policies.
@@ -172,19 +205,61 @@ public:
   /// the patch-level step: runs the two policies and the polar map on `patch` (a disk patch)
   /// and stores the border UVs, one per `patch.border()` entry, in `uv`. Updates the record.
   /// `Measured_conformal_parameterizer_3` calls this with its own patch so that the policies
-  /// share its factorization.
+  /// share its factorization, and with `factorize_interior` set so that the interior
+  /// cotangent Laplacian is factorized (if the locator does not do it anyway) while the
+  /// border distance policy prepares.
+  ///
+  /// When the border distance policy has a `prepare(patch)` step (center-independent work,
+  /// such as a factorization) and concurrency is on (the default, see `use_concurrency()`),
+  /// that step runs in a second thread while the center is located.
   template <class AnyPatch>
-  Error_code parameterize_border(AnyPatch& patch, std::vector<Eigen::Vector2d>& uv)
+  Error_code parameterize_border(AnyPatch& patch, std::vector<Eigen::Vector2d>& uv,
+                                 bool factorize_interior = false)
   {
+    typedef std::chrono::steady_clock Clock;
     Record record;
     std::size_t center = 0;
     std::vector<double> distances;
     internal::Polar_border polar;
-    Error_code status = m_center_locator.locate_center(patch, center);
+    Clock::time_point t0 = Clock::now();
+
+    Error_code prepared = OK;
+    Error_code status = OK;
+    {
+      std::unique_ptr<typename internal::Concurrent_section<typename AnyPatch::Solver_traits>::type> section;
+      std::future<Error_code> preparing;
+      if constexpr(internal::Has_prepare<Border_distance, AnyPatch>::value)
+      {
+        if(m_concurrent)
+        {
+          section = std::make_unique<typename internal::Concurrent_section<typename AnyPatch::Solver_traits>::type>();
+          preparing = std::async(std::launch::async, [this, &patch] { return m_border_distance.prepare(patch); });
+        }
+        else
+          prepared = m_border_distance.prepare(patch);
+      }
+      if(factorize_interior)
+        status = patch.factorize_interior_laplacian();
+      if(status == OK)
+        status = m_center_locator.locate_center(patch, center);
+      if(preparing.valid())
+        prepared = preparing.get();
+    }
+    Clock::time_point t1 = Clock::now();
+    record.center_seconds = std::chrono::duration<double>(t1 - t0).count();
     if(status == OK)
+      status = prepared;
+    if(status == OK)
+    {
       status = m_border_distance.compute_border_distances(patch, center, distances);
+      t0 = Clock::now();
+      record.distance_seconds = std::chrono::duration<double>(t0 - t1).count();
+    }
     if(status == OK)
+    {
       status = internal::polar_border_map(patch, center, distances, polar);
+      record.border_map_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    }
 
     record.status = status;
     record.statistics = patch.statistics();
@@ -220,6 +295,12 @@ public:
   /// the polar angle of each border vertex in the last call.
   const std::vector<double>& border_angles() const { return m_record->border_angles; }
 
+  /// whether the border distance policy's `prepare()` step runs in a second thread while
+  /// the center is located (default: `true`). Results do not depend on it.
+  void use_concurrency(bool on) { m_concurrent = on; }
+  /// see `use_concurrency()`.
+  bool uses_concurrency() const { return m_concurrent; }
+
   /// the center locator.
   const Center_locator& center_locator() const { return m_center_locator; }
   /// the border distance policy.
@@ -229,6 +310,7 @@ private:
   Center_locator m_center_locator;
   Border_distance m_border_distance;
   std::shared_ptr<Record> m_record;
+  bool m_concurrent = true;
 };
 
 } // namespace Surface_mesh_parameterization

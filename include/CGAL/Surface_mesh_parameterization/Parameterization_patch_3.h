@@ -48,6 +48,14 @@ namespace Surface_mesh_parameterization {
 /// factorization by back-substitution. `statistics()` counts the factorizations and
 /// back-substitutions done so far.
 ///
+/// It also owns, on request, the factorization of the spring Laplacian grounded at one
+/// vertex, which serves the Poisson distance map from any single source.
+///
+/// Concurrency: after `build_disk()` or `build_component()`, the interior system (with
+/// `factorize_interior_laplacian()`, `solve_interior()`) and the spring system (with
+/// `factorize_spring_laplacian()`, `solve_spring_poisson()`) may be used from two different
+/// threads at the same time; everything else is read-only.
+///
 /// This class is the argument type of the `MeasuredCenterLocator` and
 /// `MeasuredBorderDistance` concepts.
 ///
@@ -208,21 +216,10 @@ public:
   /// @{
 
   /// `d_i = sum_j w_ij` for the cotangent weights `w_ij = (cot a_ij + cot b_ij) / 2`.
-  const std::vector<double>& cotangent_row_sums() const
-  {
-    if(m_cot_row_sums.size() != m_vertices.size())
-      internal::laplacian_row_sums(m_faces, m_vertices.size(),
-                                   internal::Cotangent_weight{&m_half_cot}, m_cot_row_sums);
-    return m_cot_row_sums;
-  }
+  const std::vector<double>& cotangent_row_sums() const { return m_cot_row_sums; }
 
   /// `g_i`: mean length of the edges at each vertex (paper Eq. 1's right-hand side).
-  const std::vector<double>& mean_spoke_lengths() const
-  {
-    if(m_mean_spoke.size() != m_vertices.size())
-      internal::mean_spoke_lengths(m_faces, m_points, m_single_edges, m_mean_spoke);
-    return m_mean_spoke;
-  }
+  const std::vector<double>& mean_spoke_lengths() const { return m_mean_spoke; }
 
   /// assembles and factorizes the interior cotangent Laplacian `L_II` unless it already is.
   /// Requires a disk patch (a main border); otherwise returns `ERROR_WRONG_PARAMETER`.
@@ -270,16 +267,95 @@ public:
       }
   }
 
+  /// assembles and factorizes, unless it already is for this `exponent`, the spring
+  /// Laplacian (weights \f$ |x_i - x_j|^{-r} \f$, \f$ r \f$ = `exponent`) of the whole patch
+  /// *grounded* at one vertex (`spring_ground()`), i.e. restricted to the other vertices.
+  /// This factorization does not depend on the center, so it can be computed while the
+  /// center is being located, and it serves the Poisson distance map from any single source
+  /// (`solve_spring_poisson()`).
+  Error_code factorize_spring_laplacian(double exponent)
+  {
+    if(m_spring_system && m_spring_system->is_factorized() && m_spring_exponent == exponent)
+      return OK;
+    if(m_vertices.size() < 2 || !std::isfinite(exponent))
+      return ERROR_WRONG_PARAMETER;
+    m_spring_exponent = exponent;
+    m_spring_ground = m_border.empty() ? 0 : static_cast<std::size_t>(m_border.front());
+    std::vector<int> unknown(m_vertices.size());
+    int next = 0;
+    for(std::size_t i = 0; i < unknown.size(); ++i)
+      unknown[i] = (i == m_spring_ground) ? -1 : next++;
+    const internal::Spring_weight weight{&m_faces, &m_points, &m_single_edges, exponent};
+    internal::laplacian_row_sums(m_faces, m_vertices.size(), weight, m_spring_row_sums);
+    std::vector<internal::Triplet> triplets;
+    internal::laplacian_triplets(m_faces, unknown, weight, triplets);
+    m_spring_system = std::make_unique<System>();
+    return m_spring_system->factor(triplets, next);
+  }
+
+  /// the vertex at which the spring Laplacian is grounded.
+  std::size_t spring_ground() const { return m_spring_ground; }
+
+  /// the Poisson distance map (paper Eq. 1, spring weights with exponent `exponent`) from the
+  /// single vertex `source`, one value per patch vertex, with one back-substitution of the
+  /// grounded spring Laplacian (factorized first if needed).
+  ///
+  /// With \f$ b_i = d_i g_i \f$, the map \f$ f \f$ solves \f$ (L f)_i = b_i \f$ for
+  /// \f$ i \neq s \f$ and \f$ f_s = 0 \f$. Set \f$ r = b \f$ off the source and
+  /// \f$ r_s = -\sum_{i \neq s} b_i \f$: then \f$ \sum r = 0 \f$, so \f$ L g = r \f$ has the
+  /// solutions \f$ g + c \mathbf{1} \f$, one of which the grounded system gives, and
+  /// \f$ f = g - g_s \mathbf{1} \f$ (the solution is unique).
+  Error_code solve_spring_poisson(std::size_t source, double exponent, std::vector<double>& values)
+  {
+    if(source >= m_vertices.size())
+      return ERROR_WRONG_PARAMETER;
+    Error_code status = factorize_spring_laplacian(exponent);
+    if(status != OK)
+      return status;
+    const std::size_t n = m_vertices.size();
+    std::vector<double> rhs;
+    rhs.reserve(n - 1);
+    double sum = 0.;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const double b = (i == source) ? 0. : m_spring_row_sums[i] * m_mean_spoke[i];
+      sum += b;
+      if(i != m_spring_ground)
+        rhs.push_back(b);
+    }
+    if(source != m_spring_ground)
+    {
+      const std::size_t row = (source < m_spring_ground) ? source : source - 1;
+      rhs[row] = -sum;
+    }
+    std::vector<double> g;
+    status = m_spring_system->solve(rhs, g);
+    if(status != OK)
+      return status;
+    values.resize(n);
+    for(std::size_t i = 0, row = 0; i < n; ++i)
+      values[i] = (i == m_spring_ground) ? 0. : g[row++];
+    const double shift = values[source];
+    for(double& f : values)
+      f -= shift;
+    values[source] = 0.;
+    return OK;
+  }
+
   /// records the work of a system that a policy solved on its own (for example the spring
-  /// Laplacian of the Poisson distance map), so that `statistics()` tells the whole cost.
+  /// Laplacian of a multi-source Poisson distance map), so that `statistics()` tells the
+  /// whole cost.
   void add_statistics(const Statistics& s) { m_other_stats.add(s); }
 
-  /// factorizations and back-substitutions done so far on this patch.
+  /// factorizations and back-substitutions done so far on this patch (times are summed
+  /// over systems, also when two were factorized concurrently).
   Statistics statistics() const
   {
     Statistics s = m_other_stats;
     if(m_interior_system)
       s.add(m_interior_system->statistics());
+    if(m_spring_system)
+      s.add(m_spring_system->statistics());
     return s;
   }
 
@@ -302,8 +378,12 @@ private:
     m_interior_index.clear();
     m_cot_row_sums.clear();
     m_mean_spoke.clear();
+    m_spring_row_sums.clear();
     m_border_loops = 0;
     m_interior_system.reset();
+    m_spring_system.reset();
+    m_spring_exponent = 0.;
+    m_spring_ground = 0;
     m_other_stats = Statistics();
   }
 
@@ -456,6 +536,10 @@ private:
         m_half_cot[f][static_cast<std::size_t>(k)] = 0.5 * a.dot(b) / double_area;
       }
     }
+    // computed here, once, so that the steps can read them concurrently
+    internal::laplacian_row_sums(m_faces, m_vertices.size(),
+                                 internal::Cotangent_weight{&m_half_cot}, m_cot_row_sums);
+    internal::mean_spoke_lengths(m_faces, m_points, m_single_edges, m_mean_spoke);
     return OK;
   }
 
@@ -471,9 +555,13 @@ private:
   std::vector<int> m_interior;
   std::vector<int> m_interior_index;
   int m_border_loops = 0;
-  mutable std::vector<double> m_cot_row_sums;
-  mutable std::vector<double> m_mean_spoke;
+  std::vector<double> m_cot_row_sums;
+  std::vector<double> m_mean_spoke;
   std::unique_ptr<System> m_interior_system;
+  std::unique_ptr<System> m_spring_system;
+  std::vector<double> m_spring_row_sums;
+  double m_spring_exponent = 0.;
+  std::size_t m_spring_ground = 0;
   Statistics m_other_stats;
 };
 

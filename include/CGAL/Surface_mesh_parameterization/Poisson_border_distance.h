@@ -9,7 +9,6 @@
 /// \file Poisson_border_distance.h
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/poisson_distance.h>
 
 #include <cmath>
 #include <cstddef>
@@ -24,8 +23,13 @@ namespace Surface_mesh_parameterization {
 /// center (`poisson_distance_map()`, spring weights \f$ |x_i - x_j|^{-r} \f$, only the center
 /// constrained), read at the border vertices. Positive by the paper's Theorem A1.
 ///
-/// Cost: one factorization of the spring Laplacian (all vertices but the center) and one
-/// back-substitution.
+/// Cost: one factorization of the spring Laplacian and one back-substitution. The
+/// factorization is that of the Laplacian grounded at a fixed vertex
+/// (`Parameterization_patch_3::factorize_spring_laplacian()`), which does not depend on the
+/// center: `prepare()` computes it, and the parameterizers of this package run `prepare()`
+/// concurrently with the center locator. The distance from the center then follows from
+/// one back-substitution (`Parameterization_patch_3::solve_spring_poisson()`); it equals the
+/// solution of the system restricted to all vertices but the center.
 ///
 /// \cgalModels `MeasuredBorderDistance`
 ///
@@ -42,6 +46,13 @@ public:
   /// the exponent of the spring weights.
   double spring_exponent() const { return m_exponent; }
 
+  /// the center-independent work: factorizes the patch's grounded spring Laplacian.
+  template <class Patch>
+  Error_code prepare(Patch& patch) const
+  {
+    return patch.factorize_spring_laplacian(m_exponent);
+  }
+
   /// stores in `distances[k]` the Poisson distance from `center` to `patch.border()[k]`.
   /// \return `OK`, `ERROR_WRONG_PARAMETER` (non-finite exponent or bad center), or
   ///         `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
@@ -52,8 +63,7 @@ public:
     if(!std::isfinite(m_exponent) || center >= patch.number_of_vertices())
       return ERROR_WRONG_PARAMETER;
     std::vector<double> values;
-    const std::vector<int> sources(1, static_cast<int>(center));
-    const Error_code status = internal::spring_poisson_distance(patch, sources, m_exponent, values);
+    const Error_code status = patch.solve_spring_poisson(center, m_exponent, values);
     if(status != OK)
       return status;
     distances.resize(patch.border().size());

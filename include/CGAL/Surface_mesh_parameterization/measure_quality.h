@@ -72,7 +72,26 @@ struct Parameterization_quality
   std::size_t number_of_vertices = 0;
 };
 
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+/// Distortion figures of one face (see `measure_quality_per_face()`).
+struct Face_quality
+{
+  /// Mean over the face's three corners of \f$ ((\alpha - \varphi)/\varphi)^2 \f$, with the
+  /// optimal angles \f$ \varphi \f$ of `Parameterization_quality::angle_distortion`.
+  double angle_distortion = 0.;
+  /// \f$ s_1/s_2 \f$ (`+infinity` for a UV triangle of zero area).
+  double quasi_conformal = 1.;
+  /// Signed area of the UV triangle (\f$ \le 0 \f$: flipped).
+  double uv_area = 0.;
+};
+
 namespace internal {
+
+struct No_face_visitor
+{
+  template <class Face>
+  void operator()(Face, const Face_quality&) const { }
+};
 
 inline double corner_angle_3(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
@@ -84,24 +103,12 @@ inline double corner_angle_2(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
   return std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
 }
 
-} // namespace internal
-
-/// \ingroup PkgSurfaceMeshParameterizationMeasured
-///
-/// measures the map given by `uvmap` on the faces of `face_range` (triangles), for example
-/// `faces(tm)`.
-/// A vertex is *interior* when `CGAL::is_border(v, tm)` is empty.
-///
-/// \tparam FaceRange a range of `face_descriptor`.
-/// \tparam VertexUVMap a model of `ReadablePropertyMap` from `vertex_descriptor` to a 2D
-///         point type with `x()` and `y()`.
-/// \param np optional named parameter `vertex_point_map`.
-template <class TriangleMesh, class FaceRange, class VertexUVMap,
-          class NamedParameters = parameters::Default_named_parameters>
+template <class TriangleMesh, class FaceRange, class VertexUVMap, class NamedParameters, class FaceVisitor>
 Parameterization_quality measure_quality(const TriangleMesh& tm,
                                          const FaceRange& face_range,
                                          VertexUVMap uvmap,
-                                         const NamedParameters& np = parameters::default_values())
+                                         const NamedParameters& np,
+                                         const FaceVisitor& visit)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor   vertex_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
@@ -171,6 +178,7 @@ Parameterization_quality measure_quality(const TriangleMesh& tm,
   for(face_descriptor f : face_range)
   {
     const Corners c = corners_of(f);
+    Face_quality fq;
     for(int k = 0; k < 3; ++k)
     {
       const double beta = internal::corner_angle_3(c.p[(k + 1) % 3] - c.p[k], c.p[(k + 2) % 3] - c.p[k]);
@@ -180,7 +188,11 @@ Parameterization_quality measure_quality(const TriangleMesh& tm,
       if(!CGAL::is_border(c.v[k], tm) && sum > 0.)
         phi *= 2. * CGAL_PI / sum;
       if(phi > 0.)
-        angle_sum_paper += ((alpha - phi) / phi) * ((alpha - phi) / phi);
+      {
+        const double e = ((alpha - phi) / phi) * ((alpha - phi) / phi);
+        angle_sum_paper += e;
+        fq.angle_distortion += e / 3.;
+      }
       if(beta > 0.)
         angle_sum_corner += ((alpha - beta) / beta) * ((alpha - beta) / beta);
     }
@@ -193,8 +205,13 @@ Parameterization_quality measure_quality(const TriangleMesh& tm,
     const double signed_uv = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
     if(!(signed_uv > 0.))
       ++q.flipped_faces;
+    fq.uv_area = signed_uv;
     if(!(A3 > 0.) || !(la > 0.))
+    {
+      fq.quasi_conformal = std::numeric_limits<double>::infinity();
+      visit(f, fq);
       continue;  // degenerate 3D face: no Jacobian, no weight
+    }
     const double bx = a.dot(b) / la, by = 2. * A3 / la;        // P = [[la, bx], [0, by]]
     // J = Q P^{-1}, P^{-1} = [[1/la, -bx/(la by)], [0, 1/by]]
     const double j00 = e1.x() / la, j10 = e1.y() / la;
@@ -205,6 +222,8 @@ Parameterization_quality measure_quality(const TriangleMesh& tm,
     const double s1 = 0.5 * (p + r);
     const double s2 = 0.5 * std::abs(p - r);
     const double qc = (s2 > 0.) ? s1 / s2 : inf;
+    fq.quasi_conformal = qc;
+    visit(f, fq);
     const double G = (s2 > 0.) ? 1. / s2 : inf;
     const double g = (s1 > 0.) ? 1. / s1 : inf;
     qc_sum += A3 * qc;
@@ -229,6 +248,49 @@ Parameterization_quality measure_quality(const TriangleMesh& tm,
   }
   return q;
 }
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// measures the map given by `uvmap` on the faces of `face_range` (triangles), for example
+/// `faces(tm)`.
+/// A vertex is *interior* when `CGAL::is_border(v, tm)` is empty.
+///
+/// \tparam FaceRange a range of `face_descriptor`.
+/// \tparam VertexUVMap a model of `ReadablePropertyMap` from `vertex_descriptor` to a 2D
+///         point type with `x()` and `y()`.
+/// \param np optional named parameter `vertex_point_map`.
+template <class TriangleMesh, class FaceRange, class VertexUVMap,
+          class NamedParameters = parameters::Default_named_parameters>
+Parameterization_quality measure_quality(const TriangleMesh& tm,
+                                         const FaceRange& face_range,
+                                         VertexUVMap uvmap,
+                                         const NamedParameters& np = parameters::default_values())
+{
+  return internal::measure_quality(tm, face_range, uvmap, np, internal::No_face_visitor());
+}
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// as `measure_quality()`, and also writes the figures of every face of `face_range` into
+/// `face_figures` (for example to color a picture of the UV layout).
+///
+/// \tparam FaceQualityMap a model of `WritablePropertyMap` with `face_descriptor` as key and
+///         `Face_quality` as value.
+template <class TriangleMesh, class FaceRange, class VertexUVMap, class FaceQualityMap,
+          class NamedParameters = parameters::Default_named_parameters>
+Parameterization_quality measure_quality_per_face(const TriangleMesh& tm,
+                                                  const FaceRange& face_range,
+                                                  VertexUVMap uvmap,
+                                                  FaceQualityMap face_figures,
+                                                  const NamedParameters& np = parameters::default_values())
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  return internal::measure_quality(tm, face_range, uvmap, np,
+                                   [&](face_descriptor f, const Face_quality& fq) { put(face_figures, f, fq); });
+}
+
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

@@ -1,0 +1,241 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURED_CONFORMAL_PARAMETERIZER_3_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURED_CONFORMAL_PARAMETERIZER_3_H
+
+/// \file Measured_conformal_parameterizer_3.h
+
+#include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
+#include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
+#include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
+
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Default.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <Eigen/Core>
+
+#include <chrono>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// The complete measured boundary parameterization of the paper (MBPPP with the default
+/// policies) in one call:
+///
+/// 1. the center (`CenterLocator`, default: maximum of the boundary Poisson distance map),
+/// 2. the distance from the center to every border vertex (`BorderDistance`, default: the
+///    Poisson distance map from the center),
+/// 3. the polar border map (as `Measured_border_parameterizer_3`),
+/// 4. the discrete conformal map of the interior with that border fixed:
+///    \f$ L_{II} u_I = -L_{IB} u_B \f$, and the same for \f$ v \f$, where \f$ L \f$ is the
+///    cotangent Laplacian.
+///
+/// The interior cotangent Laplacian \f$ L_{II} \f$ (border eliminated, symmetric positive
+/// definite) is factorized once and serves step 1 and step 4: with the default policies a
+/// call costs two factorizations (\f$ L_{II} \f$ and the spring Laplacian of step 2) and four
+/// back-substitutions (paper sections 4.4 and 5.4). The result equals that of CGAL's
+/// `Discrete_conformal_map_parameterizer_3` with `Measured_border_parameterizer_3` and a
+/// direct solver, at a fraction of the cost: CGAL's fixed border parameterizers keep the
+/// border rows in a non-symmetric system solved by BiCGSTAB by default.
+///
+/// The record of the last call (center, border distances, work counters, the time of every
+/// stage) can be read back with `last_report()`. Copies of a parameterizer share that record,
+/// so it is visible after `CGAL::Surface_mesh_parameterization::parameterize()`, which takes
+/// the parameterizer by value. Do not use copies of one object concurrently.
+///
+/// Validity: a measured border is star-shaped but in general not convex, so the result can
+/// contain flipped faces; check it, for example with `measure_quality()`.
+///
+/// \cgalModels `Parameterizer_3`
+///
+/// \tparam TriangleMesh_ a model of `FaceGraph`.
+/// \tparam CenterLocator_ a model of `MeasuredCenterLocator`. %Default: `Poisson_center_locator`.
+/// \tparam BorderDistance_ a model of `MeasuredBorderDistance`. %Default: `Poisson_border_distance`.
+/// \tparam SolverTraits_ a model of `SparseLinearAlgebraWithFactorTraits_d` for every system
+///         (factorization of symmetric positive definite matrices). %Default:
+///         `Default_sparse_cholesky_traits` (Eigen's `SimplicialLDLT`); CHOLMOD's supernodal
+///         Cholesky is available as `Cholmod_supernodal_cholesky_traits`.
+template <class TriangleMesh_,
+          class CenterLocator_ = Poisson_center_locator<TriangleMesh_>,
+          class BorderDistance_ = Poisson_border_distance<TriangleMesh_>,
+          class SolverTraits_ = Default>
+class Measured_conformal_parameterizer_3
+{
+public:
+  typedef TriangleMesh_                                                         Triangle_mesh;
+  typedef TriangleMesh_                                                         TriangleMesh;
+  /// The border step, which also holds the policies.
+  typedef Measured_border_parameterizer_3<TriangleMesh_, CenterLocator_,
+                                          BorderDistance_, SolverTraits_>       Border_parameterizer;
+  typedef typename Border_parameterizer::Center_locator                         Center_locator;
+  typedef typename Border_parameterizer::Border_distance                        Border_distance;
+  typedef typename Border_parameterizer::Solver_traits                          Solver_traits;
+  typedef typename Border_parameterizer::Patch                                  Patch;
+  typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor        vertex_descriptor;
+  typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor      halfedge_descriptor;
+
+  /// What the last call did and how long each stage took (wall-clock seconds).
+  struct Report
+  {
+    /// status of the last call
+    Error_code status = ERROR_WRONG_PARAMETER;
+    /// number of vertices and faces of the parameterized component
+    std::size_t vertices = 0, faces = 0;
+    /// input checks and indexing of the component
+    double preparation_seconds = 0.;
+    /// step 1: factorizing L_II and locating the center (the border distance policy's
+    /// `prepare()` step runs meanwhile in a second thread)
+    double center_seconds = 0.;
+    /// step 2: distances from the center to the border (including any wait for `prepare()`)
+    double distance_seconds = 0.;
+    /// step 3: polar border map
+    double border_map_seconds = 0.;
+    /// step 4: the two interior back-substitutions
+    double interior_seconds = 0.;
+    /// writing the UVs into the property maps
+    double output_seconds = 0.;
+    /// the whole call
+    double total_seconds = 0.;
+    /// factorizations and back-substitutions of the call, with their times
+    typename Patch::Statistics statistics;
+  };
+
+  /// creates a parameterizer with the given policies.
+  explicit Measured_conformal_parameterizer_3(Center_locator center_locator = Center_locator(),
+                                              Border_distance border_distance = Border_distance())
+    : m_border(center_locator, border_distance),
+      m_report(std::make_shared<Report>())
+  { }
+
+  /// computes the parameterization of the connected component bounded by the border loop of
+  /// `bhd`, writes the UV of every vertex of that component into `uvmap` and marks it in
+  /// `vpmap`. Nothing is written on failure.
+  ///
+  /// \tparam VertexUVmap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key
+  ///         and a 2D point type constructible from two `double` as value.
+  /// \tparam VertexIndexMap a model of `ReadablePropertyMap` (unused: the component is
+  ///         indexed by the patch).
+  /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` with
+  ///         `vertex_descriptor` as key and `bool` as value.
+  /// \return `OK`, or the first failure (see `Measured_border_parameterizer_3::parameterize()`),
+  ///         or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
+  template <class VertexUVmap, class VertexIndexMap, class VertexParameterizedMap>
+  Error_code parameterize(const Triangle_mesh& mesh,
+                          halfedge_descriptor bhd,
+                          VertexUVmap uvmap,
+                          VertexIndexMap /* vimap */,
+                          VertexParameterizedMap vpmap)
+  {
+    typedef std::chrono::steady_clock Clock;
+    auto seconds = [](Clock::time_point a, Clock::time_point b) {
+      return std::chrono::duration<double>(b - a).count();
+    };
+    Report report;
+    const Clock::time_point start = Clock::now();
+
+    Patch patch;
+    Error_code status = patch.build_disk(mesh, bhd, get(vertex_point, mesh));
+    Clock::time_point t = Clock::now();
+    report.preparation_seconds = seconds(start, t);
+
+    std::vector<Eigen::Vector2d> border_uv;
+    if(status == OK)
+    {
+      report.vertices = patch.number_of_vertices();
+      report.faces = patch.number_of_faces();
+      status = m_border.parameterize_border(patch, border_uv, true);
+      const typename Border_parameterizer::Record& r = m_border.last_record();
+      report.center_seconds = r.center_seconds;
+      report.distance_seconds = r.distance_seconds;
+      report.border_map_seconds = r.border_map_seconds;
+      t = Clock::now();
+    }
+
+    std::vector<double> u, v;
+    if(status == OK)
+    {
+      status = solve_interior(patch, border_uv, u, v);
+      const Clock::time_point t2 = Clock::now();
+      report.interior_seconds = seconds(t, t2);
+      t = t2;
+    }
+
+    if(status == OK)
+    {
+      typedef typename boost::property_traits<VertexUVmap>::value_type Point_2;
+      const std::vector<int>& border = patch.border();
+      for(std::size_t k = 0; k < border.size(); ++k)
+      {
+        const vertex_descriptor vd = patch.vertex(static_cast<std::size_t>(border[k]));
+        put(uvmap, vd, Point_2(border_uv[k].x(), border_uv[k].y()));
+        put(vpmap, vd, true);
+      }
+      const std::vector<int>& interior = patch.interior_vertices();
+      for(std::size_t r = 0; r < interior.size(); ++r)
+      {
+        const vertex_descriptor vd = patch.vertex(static_cast<std::size_t>(interior[r]));
+        put(uvmap, vd, Point_2(u[r], v[r]));
+        put(vpmap, vd, true);
+      }
+      report.output_seconds = seconds(t, Clock::now());
+    }
+
+    report.status = status;
+    report.statistics = patch.statistics();
+    report.total_seconds = seconds(start, Clock::now());
+    *m_report = report;
+    return status;
+  }
+
+  /// whether center-independent work runs in a second thread while the center is located
+  /// (default: `true`; see `Measured_border_parameterizer_3::use_concurrency()`). Results do
+  /// not depend on it.
+  void use_concurrency(bool on) { m_border.use_concurrency(on); }
+
+  /// the record of the last call.
+  const Report& last_report() const { return *m_report; }
+  /// the border step, with the record of its last call (center, border vertices, distances).
+  const Border_parameterizer& border_parameterizer() const { return m_border; }
+  /// the center vertex of the last call (`null_vertex()` after a failure).
+  vertex_descriptor center() const { return m_border.center(); }
+
+private:
+  // Step 4: L_II u_I = -L_IB u_B and the same for v, with the patch's factorization.
+  static Error_code solve_interior(Patch& patch, const std::vector<Eigen::Vector2d>& border_uv,
+                                   std::vector<double>& u, std::vector<double>& v)
+  {
+    std::vector<double> bu(border_uv.size()), bv(border_uv.size()), rhs;
+    for(std::size_t k = 0; k < border_uv.size(); ++k)
+    {
+      bu[k] = border_uv[k].x();
+      bv[k] = border_uv[k].y();
+    }
+    patch.interior_rhs_from_border(bu, rhs);
+    Error_code status = patch.solve_interior(rhs, u);
+    if(status != OK)
+      return status;
+    patch.interior_rhs_from_border(bv, rhs);
+    return patch.solve_interior(rhs, v);
+  }
+
+  Border_parameterizer m_border;
+  std::shared_ptr<Report> m_report;
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURED_CONFORMAL_PARAMETERIZER_3_H
