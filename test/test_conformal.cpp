@@ -1,0 +1,329 @@
+// Measured_conformal_parameterizer_3: equality with CGAL's DCP plugged with the measured
+// border, the shared factorization (2 factorizations, 4 back-substitutions), the grounded
+// spring Laplacian, concurrency, solvers, generic meshes and bad input.
+
+#define BOOST_TEST_MODULE conformal
+#include <boost/test/unit_test.hpp>
+
+#include "test_support.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Seam_mesh.h>
+
+#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/poisson_distance.h>
+#include <CGAL/Surface_mesh_parameterization/measure_quality.h>
+#ifdef MBP_WITH_CHOLMOD
+#include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
+#endif
+
+#include <Eigen/SparseLU>
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+typedef CGAL::Simple_cartesian<double>                          K;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel     EPICK;
+typedef CGAL::Surface_mesh<K::Point_3>                          Mesh;
+typedef CGAL::Polyhedron_3<EPICK>                               Poly;
+typedef boost::graph_traits<Mesh>::vertex_descriptor            vertex_descriptor;
+typedef Mesh::Property_map<vertex_descriptor, K::Point_2>       UV_map;
+typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > LU;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh>           Conformal;
+
+namespace {
+
+Mesh make(const mbp_test::Soup& soup)
+{
+  Mesh m;
+  mbp_test::soup_to_mesh(soup, m);
+  return m;
+}
+
+Mesh read(const std::string& name)
+{
+  Mesh m;
+  mbp_test::read_mesh(mbp_test::require_mesh(name), m);
+  return m;
+}
+
+UV_map new_uv(Mesh& m, const std::string& name)
+{
+  return m.add_property_map<vertex_descriptor, K::Point_2>(name, K::Point_2(-7, -7)).first;
+}
+
+// max |a - b| / max |b - center of [0,1]^2|, over all vertices
+double relative_difference(const Mesh& m, UV_map a, UV_map b)
+{
+  double diff = 0., scale = 0.;
+  for(vertex_descriptor v : vertices(m))
+  {
+    diff = (std::max)(diff, std::sqrt(CGAL::squared_distance(a[v], b[v])));
+    scale = (std::max)(scale, std::sqrt(CGAL::squared_distance(b[v], K::Point_2(0.5, 0.5))));
+  }
+  return diff / scale;
+}
+
+std::vector<std::string> real_meshes()
+{
+  if(mbp_test::mesh_set() == "shared")
+    return {"matthew_nefertiti.off", "lilium.obj", "snail.obj", "mask.off"};
+  return {"nefertiti.off", "mushroom.off", "patch-20.off"};
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(equals_cgal_dcp_with_the_measured_border_and_a_direct_solver)
+{
+  std::vector<std::pair<std::string, Mesh> > meshes;
+  meshes.emplace_back("bumpy disk", make(mbp_test::bumpy_disk()));
+  meshes.emplace_back("L-shape", make(mbp_test::l_shape()));
+  for(const std::string& name : real_meshes())
+    meshes.emplace_back(name, read(name));
+  for(auto& named : meshes)
+  {
+    Mesh& m = named.second;
+    const auto bhd = mbp_test::longest_border(m);
+    UV_map ours = new_uv(m, "v:ours"), cgal = new_uv(m, "v:cgal");
+    Conformal conformal;
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, bhd, ours), SMP::OK);
+    SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Measured_border_parameterizer_3<Mesh>, LU> dcp;
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, cgal), SMP::OK);
+    const double d = relative_difference(m, ours, cgal);
+    BOOST_TEST_MESSAGE(named.first << ": relative difference to CGAL's DCP " << d);
+    BOOST_TEST_CONTEXT(named.first) { BOOST_TEST(d <= 1e-9); }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(two_factorizations_and_four_back_substitutions)
+{
+  Mesh m = make(mbp_test::bumpy_disk());
+  UV_map uv = new_uv(m, "v:uv");
+  Conformal conformal;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, mbp_test::longest_border(m), uv), SMP::OK);
+  const Conformal::Report& r = conformal.last_report();
+  BOOST_TEST(r.status == SMP::OK);
+  BOOST_TEST(r.statistics.factorizations == 2);      // L_II, and the spring Laplacian
+  BOOST_TEST(r.statistics.back_substitutions == 4);  // BPDM, PDM, u, v
+  BOOST_TEST(r.vertices == num_vertices(m));
+  BOOST_TEST(r.faces == num_faces(m));
+  for(double t : {r.preparation_seconds, r.center_seconds, r.distance_seconds, r.border_map_seconds,
+                  r.interior_seconds, r.output_seconds})
+  {
+    BOOST_TEST(t >= 0.);
+    BOOST_TEST(t <= r.total_seconds);
+  }
+  BOOST_TEST(r.preparation_seconds + r.center_seconds + r.distance_seconds + r.border_map_seconds +
+             r.interior_seconds + r.output_seconds <= r.total_seconds * (1. + 1e-9));
+  BOOST_TEST(conformal.center() == conformal.border_parameterizer().center());
+  BOOST_TEST(!is_border(conformal.center(), m));
+
+  // with a user center, L_II serves only the interior: still 2 factorizations, 3 solves
+  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh> > fixed{
+    SMP::Fixed_center<Mesh>(vertex_descriptor(17))};
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, fixed, mbp_test::longest_border(m), uv), SMP::OK);
+  BOOST_TEST(fixed.last_report().statistics.factorizations == 2);
+  BOOST_TEST(fixed.last_report().statistics.back_substitutions == 3);
+  BOOST_TEST(fixed.center() == vertex_descriptor(17));
+}
+
+BOOST_AUTO_TEST_CASE(grounded_spring_laplacian_gives_the_poisson_distance_map)
+{
+  // The PDM from a source s solves the spring Laplacian restricted to V \ {s}. The package
+  // gets it from one factorization grounded at a fixed vertex: check both agree, for
+  // several sources, the ground vertex included.
+  for(const mbp_test::Soup& soup : {mbp_test::bumpy_disk(), mbp_test::l_shape()})
+  {
+    Mesh m = make(soup);
+    SMP::Parameterization_patch_3<Mesh> patch;
+    BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
+    BOOST_REQUIRE_EQUAL(patch.factorize_spring_laplacian(1.), SMP::OK);
+    const std::size_t n = patch.number_of_vertices();
+    for(std::size_t s : {patch.spring_ground(), std::size_t(0), n / 3, n - 1})
+      for(double r : {1., 2.})
+      {
+        std::vector<double> grounded, direct;
+        BOOST_REQUIRE_EQUAL(patch.solve_spring_poisson(s, r, grounded), SMP::OK);
+        BOOST_REQUIRE_EQUAL(SMP::internal::spring_poisson_distance(patch, std::vector<int>{int(s)}, r, direct),
+                            SMP::OK);
+        double worst = 0., largest = 0.;
+        for(std::size_t i = 0; i < n; ++i)
+        {
+          worst = (std::max)(worst, std::abs(grounded[i] - direct[i]));
+          largest = (std::max)(largest, direct[i]);
+        }
+        BOOST_TEST(grounded[s] == 0.);
+        BOOST_TEST(worst <= 1e-10 * largest);
+      }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(concurrency_does_not_change_the_result)
+{
+  for(const std::string& name : real_meshes())
+  {
+    Mesh m = read(name);
+    UV_map a = new_uv(m, "v:a"), b = new_uv(m, "v:b");
+    Conformal concurrent, sequential;
+    sequential.use_concurrency(false);
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, concurrent, mbp_test::longest_border(m), a), SMP::OK);
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, sequential, mbp_test::longest_border(m), b), SMP::OK);
+    BOOST_TEST(concurrent.center() == sequential.center());
+    BOOST_TEST(relative_difference(m, a, b) == 0.);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(every_solver_gives_the_same_parameterization)
+{
+  Mesh m = read(real_meshes()[0]);
+  UV_map ldlt = new_uv(m, "v:ldlt"), lu = new_uv(m, "v:lu");
+  Conformal a;
+  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
+                                          SMP::Poisson_border_distance<Mesh>, LU> b;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, a, mbp_test::longest_border(m), ldlt), SMP::OK);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, b, mbp_test::longest_border(m), lu), SMP::OK);
+  BOOST_TEST(a.center() == b.center());
+  BOOST_TEST(relative_difference(m, lu, ldlt) <= 1e-9);
+#ifdef MBP_WITH_CHOLMOD
+  UV_map cholmod = new_uv(m, "v:cholmod");
+  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
+                                          SMP::Poisson_border_distance<Mesh>,
+                                          SMP::Cholmod_supernodal_cholesky_traits> c;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, c, mbp_test::longest_border(m), cholmod), SMP::OK);
+  BOOST_TEST(a.center() == c.center());
+  BOOST_TEST(relative_difference(m, cholmod, ldlt) <= 1e-9);
+  BOOST_TEST(c.last_report().statistics.factorizations == 2);
+#else
+  BOOST_TEST_MESSAGE("CHOLMOD not available in this build: CHOLMOD solver not tested");
+#endif
+}
+
+BOOST_AUTO_TEST_CASE(result_is_valid_and_better_than_the_circle_on_open_patches)
+{
+  for(const std::string& name : real_meshes())
+  {
+    Mesh m = read(name);
+    UV_map uv = new_uv(m, "v:uv"), circle = new_uv(m, "v:circle");
+    Conformal conformal;
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, mbp_test::longest_border(m), uv), SMP::OK);
+    SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh>, LU> dcp;
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, mbp_test::longest_border(m), circle), SMP::OK);
+    const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
+    const SMP::Parameterization_quality qc = SMP::measure_quality(m, faces(m), circle);
+    BOOST_TEST_CONTEXT(name)
+    {
+      BOOST_TEST(q.flipped_faces == 0u);
+      BOOST_TEST(q.angle_distortion < 0.8 * qc.angle_distortion);
+      for(vertex_descriptor v : vertices(m))
+      {
+        BOOST_TEST(uv[v].x() >= -1e-12);
+        BOOST_TEST(uv[v].x() <= 1. + 1e-12);
+        BOOST_TEST(uv[v].y() >= -1e-12);
+        BOOST_TEST(uv[v].y() <= 1. + 1e-12);
+      }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(polyhedron_and_seam_mesh)
+{
+  const mbp_test::Soup soup = mbp_test::bumpy_disk();
+  Mesh sm = make(soup);
+  UV_map uv = new_uv(sm, "v:uv");
+  Conformal conformal;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(sm, conformal, mbp_test::longest_border(sm), uv), SMP::OK);
+  std::map<std::array<double, 3>, K::Point_2> by_point;
+  for(vertex_descriptor v : vertices(sm))
+    by_point[{sm.point(v).x(), sm.point(v).y(), sm.point(v).z()}] = uv[v];
+
+  {
+    Poly poly;
+    mbp_test::soup_to_mesh(soup, poly);
+    typedef boost::graph_traits<Poly>::vertex_descriptor Poly_vertex;
+    std::map<Poly_vertex, EPICK::Point_2> storage;
+    auto puv = boost::make_assoc_property_map(storage);
+    SMP::Measured_conformal_parameterizer_3<Poly> p;
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(poly, p, mbp_test::longest_border(poly), puv), SMP::OK);
+    double worst = 0.;
+    for(Poly_vertex v : vertices(poly))
+    {
+      const K::Point_2& ref = by_point.at({v->point().x(), v->point().y(), v->point().z()});
+      worst = (std::max)(worst, std::hypot(ref.x() - get(puv, v).x(), ref.y() - get(puv, v).y()));
+    }
+    BOOST_TEST(worst < 1e-12);
+  }
+  {
+    typedef Mesh::Property_map<boost::graph_traits<Mesh>::edge_descriptor, bool> Seam_edges;
+    typedef Mesh::Property_map<vertex_descriptor, bool> Seam_vertices;
+    typedef CGAL::Seam_mesh<Mesh, Seam_edges, Seam_vertices> Seam;
+    Mesh base = make(soup);
+    Seam_edges se = base.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>("e:seam", false).first;
+    Seam_vertices sv = base.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
+    Seam seam(base, se, sv);
+    auto suv = get(CGAL::dynamic_vertex_property_t<K::Point_2>(), seam);
+    SMP::Measured_conformal_parameterizer_3<Seam> p;
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(seam, p, mbp_test::longest_border(seam), suv), SMP::OK);
+    double worst = 0.;
+    for(auto v : vertices(seam))
+    {
+      const K::Point_3& q = get(get(CGAL::vertex_point, seam), v);
+      const K::Point_2& ref = by_point.at({q.x(), q.y(), q.z()});
+      worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(ref, get(suv, v))));
+    }
+    BOOST_TEST(worst < 1e-12);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_writes_nothing)
+{
+  auto expect = [](Mesh& m, boost::graph_traits<Mesh>::halfedge_descriptor bhd, SMP::Error_code code) {
+    UV_map uv = new_uv(m, "v:uv");
+    auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
+    auto vimap = m.add_property_map<vertex_descriptor, int>("v:i", 0).first;
+    Conformal conformal;
+    BOOST_TEST(conformal.parameterize(m, bhd, uv, vimap, done) == code);
+    BOOST_TEST(conformal.last_report().status == code);
+    for(vertex_descriptor v : vertices(m))
+    {
+      BOOST_TEST(uv[v] == K::Point_2(-7, -7));
+      BOOST_TEST(!done[v]);
+    }
+  };
+  {
+    Mesh empty;
+    expect(empty, boost::graph_traits<Mesh>::null_halfedge(), SMP::ERROR_EMPTY_MESH);
+  }
+  {
+    mbp_test::Soup soup = mbp_test::bumpy_disk();
+    soup.points[5][2] = std::numeric_limits<double>::quiet_NaN();
+    Mesh m = make(soup);
+    expect(m, mbp_test::longest_border(m), SMP::ERROR_NON_FINITE_COORDINATES);
+  }
+  {
+    Mesh torus = make(mbp_test::punctured_torus());
+    expect(torus, mbp_test::longest_border(torus), SMP::ERROR_NO_TOPOLOGICAL_DISC);
+  }
+  {
+    // a user center on the border
+    Mesh m = make(mbp_test::bumpy_disk());
+    const auto bhd = mbp_test::longest_border(m);
+    UV_map uv = new_uv(m, "v:uv");
+    SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh> > fixed{
+      SMP::Fixed_center<Mesh>(source(bhd, m))};
+    BOOST_TEST(SMP::parameterize(m, fixed, bhd, uv) == SMP::ERROR_WRONG_PARAMETER);
+    for(vertex_descriptor v : vertices(m))
+      BOOST_TEST(uv[v] == K::Point_2(-7, -7));
+  }
+}
