@@ -27,7 +27,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <memory>
+#include <mutex>
+#include <typeindex>
+#include <typeinfo>
 #include <vector>
 
 namespace CGAL {
@@ -342,6 +346,21 @@ public:
     return OK;
   }
 
+  /// the object of type `T` attached to this patch, constructed as `T(patch)` on the first
+  /// request. Policies use it to share center-independent work on the same patch (for
+  /// example a geodesic solver's precomputation serves both the center locator and the
+  /// border distance). Thread-safe: a request made while the object is being constructed
+  /// waits for it. The object lives as long as the patch's current content.
+  template <class T>
+  T& shared_object()
+  {
+    std::unique_lock<std::mutex> lock(*m_objects_mutex);
+    std::shared_ptr<void>& slot = m_objects[std::type_index(typeid(T))];
+    if(!slot)
+      slot = std::make_shared<T>(static_cast<const Parameterization_patch_3&>(*this));
+    return *static_cast<T*>(slot.get());
+  }
+
   /// records the work of a system that a policy solved on its own (for example the spring
   /// Laplacian of a multi-source Poisson distance map), so that `statistics()` tells the
   /// whole cost.
@@ -384,6 +403,7 @@ private:
     m_spring_system.reset();
     m_spring_exponent = 0.;
     m_spring_ground = 0;
+    m_objects.clear();
     m_other_stats = Statistics();
   }
 
@@ -563,6 +583,8 @@ private:
   double m_spring_exponent = 0.;
   std::size_t m_spring_ground = 0;
   Statistics m_other_stats;
+  std::unique_ptr<std::mutex> m_objects_mutex = std::make_unique<std::mutex>();
+  std::map<std::type_index, std::shared_ptr<void> > m_objects;
 };
 
 } // namespace Surface_mesh_parameterization

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/poisson_distance.h>
+#include <CGAL/Surface_mesh_parameterization/internal/source_components.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -130,69 +131,18 @@ Error_code poisson_distance_map(const TriangleMesh& tm,
                                 double spring_exponent = 1.,
                                 const NamedParameters& np = parameters::default_values())
 {
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor   vertex_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor     face_descriptor;
-  typedef typename boost::property_traits<VertexDistanceMap>::value_type  FT;
   typedef typename internal::Solver_from_np<TriangleMesh, NamedParameters>::type Solver;
 
   if(!std::isfinite(spring_exponent))
     return ERROR_WRONG_PARAMETER;
-  const std::vector<vertex_descriptor> all_sources(std::begin(sources), std::end(sources));
-  if(all_sources.empty())
-    return ERROR_WRONG_PARAMETER;
-  if(faces(tm).empty())
-    return ERROR_EMPTY_MESH;
-
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(vertex_point, tm));
-
-  // Solve every component that holds a source; write only once all succeeded.
-  std::vector<std::pair<vertex_descriptor, double> > results;
-  std::vector<bool> done(all_sources.size(), false);
-  for(std::size_t s = 0; s < all_sources.size(); ++s)
-  {
-    if(done[s])
-      continue;
-    face_descriptor seed = boost::graph_traits<TriangleMesh>::null_face();
-    if(halfedge(all_sources[s], tm) != boost::graph_traits<TriangleMesh>::null_halfedge())
-      for(halfedge_descriptor h : halfedges_around_target(halfedge(all_sources[s], tm), tm))
-        if(!is_border(h, tm))
-        {
-          seed = face(h, tm);
-          break;
-        }
-    if(seed == boost::graph_traits<TriangleMesh>::null_face())  // isolated vertex
-    {
-      results.emplace_back(all_sources[s], 0.);
-      done[s] = true;
-      continue;
-    }
-
-    Parameterization_patch_3<TriangleMesh, Solver> patch;
-    Error_code status = patch.build_component(tm, seed, vpm);
-    if(status != OK)
-      return status;
-    std::vector<int> local_sources;
-    for(std::size_t t = s; t < all_sources.size(); ++t)
-    {
-      const int id = patch.index(all_sources[t]);
-      if(id >= 0)
-      {
-        local_sources.push_back(id);
-        done[t] = true;
-      }
-    }
-    std::vector<double> values;
-    status = internal::spring_poisson_distance(patch, local_sources, spring_exponent, values);
-    if(status != OK)
-      return status;
-    for(std::size_t i = 0; i < values.size(); ++i)
-      results.emplace_back(patch.vertex(i), values[i]);
-  }
-  for(const auto& r : results)
-    put(distance_map, r.first, FT(r.second));
-  return OK;
+  return internal::distance_map_over_source_components<Solver>(
+    tm, sources, vpm, distance_map,
+    [spring_exponent](Parameterization_patch_3<TriangleMesh, Solver>& patch,
+                      const std::vector<int>& local_sources, std::vector<double>& values) {
+      return internal::spring_poisson_distance(patch, local_sources, spring_exponent, values);
+    });
 }
 
 } // namespace Surface_mesh_parameterization

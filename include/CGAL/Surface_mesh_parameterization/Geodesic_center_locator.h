@@ -1,0 +1,70 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_GEODESIC_CENTER_LOCATOR_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_GEODESIC_CENTER_LOCATOR_H
+
+/// \file Geodesic_center_locator.h
+
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
+#include <CGAL/Surface_mesh_parameterization/internal/center_selection.h>
+#include <CGAL/Surface_mesh_parameterization/internal/geodesic_solvers.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// The boundary geodesic distance map center (the paper's BGDM, section 4.1): the geodesic
+/// distance from the whole border loop (all its vertices are sources) is computed with
+/// `Method`, and the center is its maximum over the interior vertices.
+///
+/// Ties, which BGDM has on symmetric shapes (two maxima on the paper's ellipse): values
+/// within a relative `1e-9` of the maximum count as tied, and the center is the interior
+/// vertex nearest to the mean position of the tied maxima (then the smallest patch index),
+/// as for `Poisson_center_locator`.
+///
+/// Cost: one multi-source distance computation. The method's precomputation is shared with
+/// a `Geodesic_border_distance` of the same `Method` on the same patch.
+///
+/// \cgalModels `MeasuredCenterLocator`
+///
+/// \tparam TriangleMesh a model of `FaceGraph`.
+/// \tparam Method `Fast_marching_geodesics` (default), `Dijkstra_geodesics`,
+///         `Heat_method_geodesics<Mode>` or `Exact_geodesics`.
+template <class TriangleMesh, class Method = Fast_marching_geodesics>
+class Geodesic_center_locator
+{
+public:
+  /// The geodesic method.
+  typedef Method Geodesic_method;
+
+  /// stores in `center` the patch index of the maximum of the boundary geodesic distance.
+  /// \return `OK`, `ERROR_NO_INTERIOR_VERTEX` or `ERROR_DISTANCE_COMPUTATION_FAILED`.
+  template <class Patch>
+  Error_code locate_center(Patch& patch, std::size_t& center) const
+  {
+    if(patch.interior_vertices().empty())
+      return ERROR_NO_INTERIOR_VERTEX;
+    std::vector<double> values;
+    const Error_code status = internal::geodesic_distances<Method>(patch, patch.border(), values);
+    if(status != OK)
+      return status;
+    const int c = internal::argmax_with_tie_break(patch, values);
+    if(c < 0)
+      return ERROR_DISTANCE_COMPUTATION_FAILED;
+    center = static_cast<std::size_t>(c);
+    return OK;
+  }
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_GEODESIC_CENTER_LOCATOR_H
