@@ -1,0 +1,316 @@
+// Input of the measured_parameterization program: reading a mesh file with a message that
+// names the problem when it fails, the generated fallback mesh, and the checks that give a
+// precise message before the library sees the mesh.
+
+#ifndef MBP_CLI_MESH_INPUT_H
+#define MBP_CLI_MESH_INPUT_H
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/number_type_config.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstddef>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace mbp_cli {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+/// A failure of the program: a code of the library (`SMP::OK` for failures that have none,
+/// such as an unreadable file) and the details.
+struct Failure
+{
+  SMP::Error_code code = SMP::OK;
+  std::string detail;
+
+  bool failed() const { return !detail.empty() || code != SMP::OK; }
+  /// the message: the library's text for the code, then the details.
+  std::string message() const
+  {
+    if(code == SMP::OK)
+      return detail;
+    std::string m = SMP::get_measured_error_message(code);
+    if(!detail.empty())
+      m += ": " + detail;
+    return m;
+  }
+};
+
+inline std::string lowercase_extension(const std::string& path)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  if(!ext.empty())
+    ext.erase(0, 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+namespace internal {
+
+// CGAL's text readers stop at a coordinate such as "nan" or "inf" and only say that reading
+// failed. To name that problem, the file is scanned for a token that is entirely a number
+// (as strtod reads it) but not a finite one. Comment lines are skipped. Returns the message,
+// or an empty string when there is no such token.
+inline std::string find_non_finite_number(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  for(std::size_t line_number = 1; std::getline(in, line); ++line_number)
+  {
+    std::istringstream tokens(line);
+    std::string token;
+    bool first = true;
+    while(tokens >> token)
+    {
+      if(first && (token[0] == '#' || token == "comment"))
+        break;
+      first = false;
+      char* end = nullptr;
+      errno = 0;
+      const double value = std::strtod(token.c_str(), &end);
+      if(end == token.c_str() + token.size() && !std::isfinite(value))
+        return "line " + std::to_string(line_number) + " has the coordinate '" + token +
+               "', which is not a finite number (NaN and infinite coordinates are not accepted)";
+    }
+  }
+  return std::string();
+}
+
+} // namespace internal
+
+/// reads the polygon mesh of the file `path` (.off, .obj, .ply or .stl). Vertices keep the
+/// order of the file (CGAL's readers add them in file order; the STL reader merges equal
+/// points in order of first appearance). On failure, the message names the problem (the
+/// caller prefixes the file name).
+template <class Mesh>
+Failure read_mesh(const std::string& path, Mesh& mesh)
+{
+  namespace fs = std::filesystem;
+  Failure f;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if(!fs::exists(status))
+  {
+    f.detail = "no such file";
+    return f;
+  }
+  if(fs::is_directory(status))
+  {
+    f.detail = "it is a directory, not a mesh file";
+    return f;
+  }
+  {
+    std::ifstream probe(path, std::ios::binary);
+    if(!probe)
+    {
+      f.detail = std::string("cannot open: ") + std::strerror(errno);
+      return f;
+    }
+    if(probe.peek() == std::ifstream::traits_type::eof())
+    {
+      f.detail = "the file is empty";
+      return f;
+    }
+  }
+  const std::string ext = lowercase_extension(path);
+  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+  {
+    f.detail = "unsupported file extension '" + fs::path(path).extension().string() +
+               "' (expected .off, .obj, .ply or .stl)";
+    return f;
+  }
+
+  if(CGAL::IO::read_polygon_mesh(path, mesh))
+    return f;
+  mesh.clear();
+
+  // Why did it fail? A non-finite coordinate, a soup that is not a manifold mesh, or a
+  // file that cannot be parsed at all.
+  const std::string non_finite = internal::find_non_finite_number(path);
+  if(!non_finite.empty())
+  {
+    f.code = SMP::ERROR_NON_FINITE_COORDINATES;
+    f.detail = non_finite;
+    return f;
+  }
+  typedef typename boost::property_traits<
+    typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point_3;
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  if(CGAL::IO::read_polygon_soup(path, points, polygons) && !polygons.empty())
+    f.detail = "not a polygon mesh: its " + std::to_string(polygons.size()) +
+               " faces do not form a consistently oriented 2-manifold (an edge shared by more than"
+               " two faces, a non-manifold vertex, inconsistent orientation, or a face that uses"
+               " a vertex twice)";
+  else
+    f.detail = "cannot read it: not a valid ." + ext + " mesh file (malformed or truncated)";
+  return f;
+}
+
+/// The fallback default mesh: a curved, elliptic disk (a hexagonal lattice pushed onto
+/// concentric circles, lifted onto an asymmetric bump), 1261 vertices and 2400 faces.
+/// `Mesh` is a `CGAL::Surface_mesh`, as in the rest of this file.
+template <class Mesh>
+void make_curved_disk(Mesh& mesh)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::property_traits<
+    typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point_3;
+  const int rings = 20;
+  const std::size_t side = std::size_t(2 * rings + 1);
+  auto ring_of = [](int q, int r) { return (std::abs(q) + std::abs(r) + std::abs(q + r)) / 2; };
+  auto inside = [&](int q, int r) {
+    return q >= -rings && q <= rings && r >= -rings && r <= rings && ring_of(q, r) <= rings;
+  };
+  std::vector<vertex_descriptor> id(side * side);
+  auto slot = [&](int q, int r) -> vertex_descriptor& { return id[std::size_t(q + rings) * side + std::size_t(r + rings)]; };
+
+  for(int q = -rings; q <= rings; ++q)
+    for(int r = -rings; r <= rings; ++r)
+      if(inside(q, r))
+      {
+        // lattice point, moved radially so that lattice ring k lies on the circle k / rings
+        const double x = q + 0.5 * r, y = 0.5 * std::sqrt(3.) * r;
+        const int k = ring_of(q, r);
+        const double scale = (k == 0) ? 0. : (double(k) / rings) / std::sqrt(x * x + y * y);
+        const double px = 1.4 * scale * x, py = 0.9 * scale * y;
+        const double pz = 0.45 * px * px - 0.25 * py * py + 0.2 * px * py + 0.15 * std::sin(3. * px);
+        slot(q, r) = mesh.add_vertex(Point_3(px, py, pz));
+      }
+  for(int q = -rings; q < rings; ++q)
+    for(int r = -rings; r < rings; ++r)
+    {
+      if(inside(q, r) && inside(q + 1, r) && inside(q, r + 1))
+        CGAL::Euler::add_face(std::array<vertex_descriptor, 3>{slot(q, r), slot(q + 1, r), slot(q, r + 1)}, mesh);
+      if(inside(q + 1, r) && inside(q + 1, r + 1) && inside(q, r + 1))
+        CGAL::Euler::add_face(std::array<vertex_descriptor, 3>{slot(q + 1, r), slot(q + 1, r + 1), slot(q, r + 1)}, mesh);
+    }
+}
+
+/// checks what the program needs before the library runs, with precise messages: faces, all
+/// triangles, one connected component, a border. Sets `bhd` to a halfedge of the longest
+/// border and `border_length` to its 3D length.
+template <class Mesh>
+Failure check_mesh(const Mesh& mesh,
+                   typename boost::graph_traits<Mesh>::halfedge_descriptor& bhd,
+                   double& border_length)
+{
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+  Failure f;
+  if(faces(mesh).empty())
+  {
+    f.code = SMP::ERROR_EMPTY_MESH;
+    f.detail = "it has no faces (" + std::to_string(num_vertices(mesh)) + " vertices)";
+    return f;
+  }
+
+  std::size_t non_triangles = 0, first_index = 0, first_degree = 0, index = 0;
+  for(face_descriptor fd : faces(mesh))
+  {
+    const std::size_t degree = CGAL::halfedges_around_face(halfedge(fd, mesh), mesh).size();
+    if(degree != 3 && non_triangles++ == 0)
+    {
+      first_index = index;
+      first_degree = degree;
+    }
+    ++index;
+  }
+  if(non_triangles > 0)
+  {
+    f.code = SMP::ERROR_NON_TRIANGULAR_MESH;
+    f.detail = std::to_string(non_triangles) + " of its " + std::to_string(num_faces(mesh)) +
+               " faces are not triangles (the first is face " + std::to_string(first_index) + ", with " +
+               std::to_string(first_degree) + " vertices); triangulate it first";
+    return f;
+  }
+
+  auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(mesh, component);
+  if(components > 1)
+  {
+    f.code = SMP::ERROR_NO_TOPOLOGICAL_DISC;
+    f.detail = "it has " + std::to_string(components) +
+               " connected components (the program needs one: extract it first)";
+    return f;
+  }
+
+  const auto border = CGAL::Polygon_mesh_processing::longest_border(mesh);
+  if(border.first == boost::graph_traits<Mesh>::null_halfedge())
+  {
+    f.code = SMP::ERROR_NO_TOPOLOGICAL_DISC;
+    f.detail = "it is closed (it has no border); cut it open into a disk first";
+    return f;
+  }
+  bhd = border.first;
+  border_length = CGAL::to_double(border.second);
+  return f;
+}
+
+/// The first face whose doubled area `2A` is at most `threshold` times its longest squared
+/// edge (the library's test of `ERROR_DEGENERATE_FACE`), to name it in the message; empty
+/// when there is none.
+template <class Mesh>
+std::string find_degenerate_face(const Mesh& mesh, double threshold)
+{
+  std::size_t index = 0;
+  for(auto fd : faces(mesh))
+  {
+    std::vector<std::size_t> ids;
+    std::vector<std::array<double, 3> > p;
+    for(auto v : CGAL::vertices_around_face(halfedge(fd, mesh), mesh))
+    {
+      const auto& q = mesh.point(v);
+      ids.push_back(std::size_t(v));
+      p.push_back({CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())});
+    }
+    if(p.size() == 3)
+    {
+      auto sub = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+        return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+      };
+      auto sq = [](const std::array<double, 3>& a) { return a[0] * a[0] + a[1] * a[1] + a[2] * a[2]; };
+      const std::array<double, 3> a = sub(p[1], p[0]), b = sub(p[2], p[0]), c = sub(p[2], p[1]);
+      const std::array<double, 3> n = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+      const double longest2 = (std::max)({sq(a), sq(b), sq(c)});
+      const double double_area = std::sqrt(sq(n));
+      if(!(double_area > threshold * longest2) || !std::isfinite(double_area))
+        return "face " + std::to_string(index) + " (vertices " + std::to_string(ids[0]) + " " +
+               std::to_string(ids[1]) + " " + std::to_string(ids[2]) + ")";
+    }
+    ++index;
+  }
+  return std::string();
+}
+
+/// The first vertex with a non-finite coordinate, to name it in the message; empty when there
+/// is none (CGAL's binary readers let NaN through; its text readers stop at it).
+template <class Mesh>
+std::string find_non_finite_vertex(const Mesh& mesh)
+{
+  for(auto v : vertices(mesh))
+  {
+    const auto& p = mesh.point(v);
+    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
+       !std::isfinite(CGAL::to_double(p.z())))
+      return "vertex " + std::to_string(std::size_t(v));
+  }
+  return std::string();
+}
+
+} // namespace mbp_cli
+
+#endif // MBP_CLI_MESH_INPUT_H

@@ -1,0 +1,239 @@
+// Command line of the measured_parameterization program: the options, their parsing and the
+// help text. No CGAL here.
+
+#ifndef MBP_CLI_OPTIONS_H
+#define MBP_CLI_OPTIONS_H
+
+#include <charconv>
+#include <cstddef>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace mbp_cli {
+
+enum class Solver { ldlt, cholmod };
+
+inline bool has_cholmod()
+{
+#ifdef MBP_WITH_CHOLMOD
+  return true;
+#else
+  return false;
+#endif
+}
+
+inline const char* solver_name(Solver s) { return s == Solver::cholmod ? "cholmod" : "ldlt"; }
+
+struct Options
+{
+  std::string input;        // empty: the built-in default mesh
+  std::string output;       // OUTPUT.obj or --output=FILE; empty: <input file stem>_uv.obj in the current directory
+  std::string svg;          // empty: no picture
+  bool json = false;
+  bool help = false;
+  bool fixed_center = false;        // --center=vertex:N
+  std::size_t center_vertex = 0;    // N
+  std::string distance = "poisson"; // the only border distance for now
+  Solver solver = has_cholmod() ? Solver::cholmod : Solver::ldlt;
+
+  std::string center_name() const
+  {
+    return fixed_center ? "vertex:" + std::to_string(center_vertex) : std::string("poisson");
+  }
+};
+
+inline std::string usage(const std::string& default_mesh)
+{
+  std::string u =
+    "usage: measured_parameterization [INPUT] [OUTPUT.obj] [--center=poisson|vertex:N]\n"
+    "                                 [--distance=poisson] [--solver=cholmod|ldlt]\n"
+    "                                 [--output=FILE] [--svg=FILE] [--json] [--help]\n"
+    "\n"
+    "Flattens a disk-like triangle mesh with the measured boundary parameterization of\n"
+    "\"Measured boundary parameterization based on Poisson's equation\": the longest border is\n"
+    "laid out around a center vertex at its measured distances from it, and the interior is\n"
+    "the discrete conformal map with that border fixed.\n"
+    "\n"
+    "  INPUT              a triangle mesh: .off, .obj, .ply or .stl, one connected component\n"
+    "                     with at least one border (holes are allowed; the longest border is\n"
+    "                     mapped). Default: ";
+  u += default_mesh.empty() ? std::string("none configured") : default_mesh;
+  u +=
+    "\n"
+    "                     (a generated curved disk when that file does not exist).\n"
+    "  OUTPUT.obj         the mesh with one UV per vertex: 'v' lines in input order, one 'vt'\n"
+    "                     line per 'v' line, faces 'f a/a b/b c/c'. Vertices that are in no face\n"
+    "                     are left out. Default: <INPUT file stem>_uv.obj in the current\n"
+    "                     directory (curved_disk_uv.obj for the generated mesh).\n"
+    "\n"
+    "options:\n"
+    "  --center=poisson   center at the maximum of the boundary Poisson distance map (default)\n"
+    "  --center=vertex:N  center at vertex N: 0-based, in file order (for STL, in order of first\n"
+    "                     appearance); it must be in a face and not on the longest border\n"
+    "  --distance=poisson distances from the center to the border by the Poisson distance map\n"
+    "                     (default, and the only choice for now)\n"
+    "  --solver=NAME      sparse Cholesky factorization: cholmod (CHOLMOD supernodal) or ldlt\n"
+    "                     (Eigen's SimplicialLDLT). Default: ";
+  u += has_cholmod() ? "cholmod" : "ldlt (this build has no CHOLMOD)";
+  u +=
+    "\n"
+    "  --output=FILE      the same as OUTPUT.obj (for example with the default INPUT)\n"
+    "  --svg=FILE         also write an SVG picture of the UV layout, faces colored by their\n"
+    "                     angle distortion, flipped faces in red\n"
+    "  --json             print a JSON object on stdout instead of the one-line summary\n"
+    "  -h, --help         print this help and exit\n"
+    "\n"
+    "The summary gives the number of vertices (V) and faces (F), the border (vertices, 3D\n"
+    "length), the center (0-based index in the input), the time of each stage of the\n"
+    "parameterization in seconds, the factorizations and back-substitutions, and the\n"
+    "distortion: angle distortion (the paper's conformal distortion), Sander's L2 stretch\n"
+    "(1 is optimal), the area-weighted mean quasi-conformal distortion s1/s2 (1 is\n"
+    "conformal) and the number of flipped faces.\n"
+    "\n"
+    "A layout with flipped faces (possible, since the measured border need not be convex) is\n"
+    "still written, with a warning on stderr.\n"
+    "\n"
+    "Exit status: 0 on success; 1 when the input cannot be parameterized or an output file\n"
+    "cannot be written (no output file is then left behind); 2 on a command-line error.\n";
+  return u;
+}
+
+namespace internal {
+
+inline bool starts_with(const std::string& s, const std::string& prefix)
+{
+  return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+} // namespace internal
+
+/// parses the command line into `o`. Returns an empty string on success, otherwise the
+/// message of the first error. `--help` stops the parsing.
+inline std::string parse_options(int argc, char** argv, Options& o)
+{
+  using internal::starts_with;
+  std::vector<std::string> positional;
+  bool seen_center = false, seen_distance = false, seen_solver = false, seen_svg = false, seen_json = false;
+  bool seen_output = false;
+  bool options_ended = false;
+
+  // `--name=value`: the value, or an error for a missing or repeated option.
+  auto value_of = [](const std::string& arg, const std::string& name, bool& seen, std::string& value) -> std::string {
+    if(arg == name)
+      return "option " + name + " needs a value: " + name + "=...";
+    if(seen)
+      return "option " + name + " is given twice";
+    seen = true;
+    value = arg.substr(name.size() + 1);
+    return std::string();
+  };
+
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if(options_ended || arg.empty() || arg[0] != '-')
+    {
+      positional.push_back(arg);
+      continue;
+    }
+    std::string value, error;
+    if(arg == "--")
+      options_ended = true;
+    else if(arg == "-h" || arg == "--help")
+    {
+      o.help = true;
+      return std::string();
+    }
+    else if(arg == "--json")
+    {
+      if(seen_json)
+        return "option --json is given twice";
+      seen_json = o.json = true;
+    }
+    else if(starts_with(arg, "--json="))
+      return "option --json takes no value";
+    else if(arg == "--center" || starts_with(arg, "--center="))
+    {
+      if(!(error = value_of(arg, "--center", seen_center, value)).empty())
+        return error;
+      if(value == "poisson")
+        o.fixed_center = false;
+      else if(starts_with(value, "vertex:"))
+      {
+        const std::string n = value.substr(7);
+        unsigned long long index = 0;
+        const auto r = std::from_chars(n.data(), n.data() + n.size(), index);
+        if(n.empty() || n[0] == '+' || r.ptr != n.data() + n.size() || r.ec == std::errc::invalid_argument)
+          return "bad vertex index '" + n + "' in --center=" + value + " (expected a non-negative integer)";
+        if(r.ec == std::errc::result_out_of_range || index > static_cast<unsigned long long>(std::size_t(-1)))
+          return "vertex index " + n + " in --center=" + value + " is out of range";
+        o.fixed_center = true;
+        o.center_vertex = static_cast<std::size_t>(index);
+      }
+      else
+        return "unknown value '" + value + "' of --center (expected poisson or vertex:N)";
+    }
+    else if(arg == "--distance" || starts_with(arg, "--distance="))
+    {
+      if(!(error = value_of(arg, "--distance", seen_distance, value)).empty())
+        return error;
+      if(value != "poisson")
+        return "unknown value '" + value + "' of --distance (expected poisson)";
+      o.distance = value;
+    }
+    else if(arg == "--solver" || starts_with(arg, "--solver="))
+    {
+      if(!(error = value_of(arg, "--solver", seen_solver, value)).empty())
+        return error;
+      if(value == "ldlt")
+        o.solver = Solver::ldlt;
+      else if(value == "cholmod")
+      {
+        if(!has_cholmod())
+          return "--solver=cholmod: this build has no CHOLMOD (use --solver=ldlt)";
+        o.solver = Solver::cholmod;
+      }
+      else
+        return "unknown value '" + value + "' of --solver (expected cholmod or ldlt)";
+    }
+    else if(arg == "--output" || starts_with(arg, "--output="))
+    {
+      if(!(error = value_of(arg, "--output", seen_output, value)).empty())
+        return error;
+      if(value.empty())
+        return "option --output needs a file name: --output=FILE";
+      o.output = value;
+    }
+    else if(arg == "--svg" || starts_with(arg, "--svg="))
+    {
+      if(!(error = value_of(arg, "--svg", seen_svg, value)).empty())
+        return error;
+      if(value.empty())
+        return "option --svg needs a file name: --svg=FILE";
+      o.svg = value;
+    }
+    else
+      return "unknown option '" + arg + "' (see --help)";
+  }
+
+  if(positional.size() > 2)
+    return "too many arguments: '" + positional[2] + "' (expected at most INPUT and OUTPUT.obj)";
+  if(positional.size() > 0)
+    o.input = positional[0];
+  if(positional.size() > 1)
+  {
+    if(seen_output)
+      return "OUTPUT is given twice: '" + positional[1] + "' and --output=" + o.output;
+    o.output = positional[1];
+  }
+  if(o.input.empty() && positional.size() > 0)
+    return "empty INPUT file name";
+  if(o.output.empty() && positional.size() > 1)
+    return "empty OUTPUT file name";
+  return std::string();
+}
+
+} // namespace mbp_cli
+
+#endif // MBP_CLI_OPTIONS_H

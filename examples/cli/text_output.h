@@ -1,0 +1,288 @@
+// Text output of the measured_parameterization program: number formatting, a small JSON
+// writer, and output files that appear only when everything was written (a temporary file
+// beside the target, renamed at the end, removed on failure). No CGAL here.
+
+#ifndef MBP_CLI_TEXT_OUTPUT_H
+#define MBP_CLI_TEXT_OUTPUT_H
+
+#include <charconv>
+#include <cerrno>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+namespace mbp_cli {
+
+/// the shortest decimal text that reads back as exactly `x` (full double precision).
+inline std::string exact(double x)
+{
+  char buffer[32];
+  const std::to_chars_result r = std::to_chars(buffer, buffer + sizeof(buffer), x);
+  return std::string(buffer, r.ptr);
+}
+
+/// `x` with `digits` significant digits, for people ("inf" and "nan" as printf writes them).
+inline std::string rounded(double x, int digits = 4)
+{
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*g", digits, x);
+  return buffer;
+}
+
+/// A JSON document written in order: objects, arrays and scalar members, indented by two
+/// spaces. Strings are escaped (invalid UTF-8 becomes U+FFFD); a non-finite number is
+/// written as null.
+class Json_writer
+{
+public:
+  Json_writer& begin_object(const std::string& key = std::string()) { return open(key, '{', false); }
+  Json_writer& end_object() { return close('}'); }
+  /// an array, written on one line
+  Json_writer& begin_array(const std::string& key = std::string()) { return open(key, '[', true); }
+  Json_writer& end_array() { return close(']'); }
+
+  Json_writer& member(const std::string& key, const std::string& value) { return raw(key, quoted(value)); }
+  Json_writer& member(const std::string& key, const char* value) { return raw(key, quoted(value)); }
+  Json_writer& member(const std::string& key, double value) { return raw(key, number(value)); }
+  Json_writer& member(const std::string& key, std::size_t value) { return raw(key, std::to_string(value)); }
+  Json_writer& member(const std::string& key, int value) { return raw(key, std::to_string(value)); }
+  Json_writer& member(const std::string& key, bool value) { return raw(key, value ? "true" : "false"); }
+  Json_writer& null_member(const std::string& key) { return raw(key, "null"); }
+  /// an element of the current array
+  Json_writer& element(double value) { return raw(std::string(), number(value)); }
+
+  const std::string& text() const { return m_text; }
+
+  static std::string number(double x) { return std::isfinite(x) ? exact(x) : std::string("null"); }
+
+  static std::string quoted(const std::string& s)
+  {
+    std::string q = "\"";
+    for(std::size_t i = 0; i < s.size();)
+    {
+      const unsigned char c = static_cast<unsigned char>(s[i]);
+      if(c == '"' || c == '\\')
+      {
+        q += '\\';
+        q += char(c);
+        ++i;
+      }
+      else if(c < 0x20)
+      {
+        const char* named = (c == '\n') ? "\\n" : (c == '\t') ? "\\t" : (c == '\r') ? "\\r"
+                          : (c == '\b') ? "\\b" : (c == '\f') ? "\\f" : nullptr;
+        if(named != nullptr)
+          q += named;
+        else
+        {
+          char u[8];
+          std::snprintf(u, sizeof(u), "\\u%04x", unsigned(c));
+          q += u;
+        }
+        ++i;
+      }
+      else if(c < 0x80)
+      {
+        q += char(c);
+        ++i;
+      }
+      else
+      {
+        const std::size_t n = utf8_sequence_length(s, i);
+        if(n == 0)
+        {
+          q += "\\ufffd";
+          ++i;
+        }
+        else
+        {
+          q.append(s, i, n);
+          i += n;
+        }
+      }
+    }
+    return q + "\"";
+  }
+
+private:
+  // length of the valid UTF-8 sequence starting at s[i] (a byte >= 0x80), or 0
+  static std::size_t utf8_sequence_length(const std::string& s, std::size_t i)
+  {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    std::size_t n = 0;
+    unsigned long min = 0;
+    if(c >= 0xc2 && c <= 0xdf) { n = 2; min = 0x80; }
+    else if(c >= 0xe0 && c <= 0xef) { n = 3; min = 0x800; }
+    else if(c >= 0xf0 && c <= 0xf4) { n = 4; min = 0x10000; }
+    else return 0;
+    if(i + n > s.size())
+      return 0;
+    unsigned long code = c & (0xff >> (n + 1));
+    for(std::size_t k = 1; k < n; ++k)
+    {
+      const unsigned char d = static_cast<unsigned char>(s[i + k]);
+      if((d & 0xc0) != 0x80)
+        return 0;
+      code = (code << 6) | (d & 0x3f);
+    }
+    if(code < min || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff))
+      return 0;
+    return n;
+  }
+
+  Json_writer& raw(const std::string& key, const std::string& value)
+  {
+    separate();
+    if(!key.empty())
+      m_text += quoted(key) + ": ";
+    m_text += value;
+    return *this;
+  }
+
+  Json_writer& open(const std::string& key, char bracket, bool one_line)
+  {
+    raw(key, std::string(1, bracket));
+    m_open.push_back({true, one_line});
+    return *this;
+  }
+
+  Json_writer& close(char bracket)
+  {
+    const Container c = m_open.back();
+    m_open.pop_back();
+    if(!c.empty && !c.one_line)
+      m_text += "\n" + std::string(2 * m_open.size(), ' ');
+    m_text += bracket;
+    if(m_open.empty())
+      m_text += "\n";
+    return *this;
+  }
+
+  void separate()
+  {
+    if(m_open.empty())
+      return;
+    Container& c = m_open.back();
+    if(!c.empty)
+      m_text += c.one_line ? ", " : ",";
+    if(!c.one_line)
+      m_text += "\n" + std::string(2 * m_open.size(), ' ');
+    c.empty = false;
+  }
+
+  struct Container
+  {
+    bool empty;     // nothing written in it yet
+    bool one_line;
+  };
+  std::string m_text;
+  std::vector<Container> m_open;
+};
+
+/// Files written all or nothing: `add()` writes the contents of each file into a temporary
+/// file in the same directory, `commit()` renames them all to their names. Until `commit()`
+/// succeeds, the destructor removes every temporary file and every file already renamed.
+class Output_files
+{
+public:
+  Output_files() = default;
+  Output_files(const Output_files&) = delete;
+  Output_files& operator=(const Output_files&) = delete;
+  ~Output_files() { discard(); }
+
+  /// writes `contents` into a temporary file beside `path`. Returns an error message, or an
+  /// empty string on success.
+  std::string add(const std::string& path, const std::string& contents)
+  {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    if(target.filename().empty())
+      return "cannot write '" + path + "': not a file name";
+    std::error_code ec;
+    if(fs::is_directory(target, ec))
+      return "cannot write '" + path + "': it is a directory";
+
+    // A hidden name in the target's directory, so that the final rename stays within one
+    // file system; O_EXCL never reuses an existing file. Mode 0666 minus the umask, as the
+    // target would get.
+    std::string temporary;
+    int fd = -1;
+    for(int attempt = 0; fd < 0 && attempt < 100; ++attempt)
+    {
+      temporary = (target.parent_path() / ("." + target.filename().string() + ".tmp" +
+                                           std::to_string(::getpid()) + "-" + std::to_string(attempt))).string();
+      fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+      if(fd < 0 && errno != EEXIST)
+        return "cannot write '" + path + "': " + std::strerror(errno);
+    }
+    if(fd < 0)
+      return "cannot write '" + path + "': no free temporary file name";
+    m_files.push_back({path, temporary, false});
+
+    const char* data = contents.data();
+    std::size_t left = contents.size();
+    while(left > 0)
+    {
+      const ssize_t n = ::write(fd, data, left);
+      if(n < 0 && errno == EINTR)
+        continue;
+      if(n <= 0)
+      {
+        const int error = errno;
+        ::close(fd);
+        return "cannot write '" + path + "': " + std::strerror(error);
+      }
+      data += n;
+      left -= static_cast<std::size_t>(n);
+    }
+    if(::close(fd) != 0)
+      return "cannot write '" + path + "': " + std::strerror(errno);
+    return std::string();
+  }
+
+  /// renames every temporary file to its target. Returns an error message (and then removes
+  /// every file), or an empty string on success.
+  std::string commit()
+  {
+    for(File& f : m_files)
+    {
+      if(std::rename(f.temporary.c_str(), f.path.c_str()) != 0)
+      {
+        const std::string message = "cannot write '" + f.path + "': " + std::strerror(errno);
+        discard();
+        return message;
+      }
+      f.renamed = true;
+    }
+    m_files.clear();
+    return std::string();
+  }
+
+private:
+  struct File
+  {
+    std::string path, temporary;
+    bool renamed;
+  };
+
+  void discard()
+  {
+    for(const File& f : m_files)
+      std::remove(f.renamed ? f.path.c_str() : f.temporary.c_str());
+    m_files.clear();
+  }
+
+  std::vector<File> m_files;
+};
+
+} // namespace mbp_cli
+
+#endif // MBP_CLI_TEXT_OUTPUT_H

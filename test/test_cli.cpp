@@ -1,0 +1,686 @@
+// The command-line program (examples/measured_parameterization.cpp), run as a user runs it:
+// its OBJ is the mesh with the library's UVs, its SVG and JSON are complete, and every kind
+// of bad input ends with a message naming the problem, a non-zero exit and no output file.
+
+#define BOOST_TEST_MODULE cli
+#include <boost/test/unit_test.hpp>
+
+#include "test_support.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+
+#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace fs = std::filesystem;
+typedef CGAL::Simple_cartesian<double>                     K;
+typedef CGAL::Surface_mesh<K::Point_3>                     Mesh;
+typedef boost::graph_traits<Mesh>::vertex_descriptor       vertex_descriptor;
+typedef boost::graph_traits<Mesh>::halfedge_descriptor     halfedge_descriptor;
+
+namespace {
+
+// ---------------------------------------------------------------- running the program
+
+struct Run
+{
+  bool exited = false;  // false: killed by a signal (a crash)
+  int code = -1;        // exit status
+  std::string out, err;
+};
+
+// A fresh directory for one run: `work` is the program's working directory (it holds the
+// input files the test writes, and should hold nothing else after a failure), stdout and
+// stderr are captured beside it. Removed at the end.
+struct Scratch
+{
+  fs::path root, work;
+
+  Scratch()
+  {
+    static int counter = 0;
+    root = fs::temp_directory_path() /
+           ("mbp_test_cli_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+    work = root / "work";
+    fs::remove_all(root);
+    fs::create_directories(work);
+  }
+  ~Scratch()
+  {
+    std::error_code ec;
+    fs::remove_all(root, ec);
+  }
+
+  fs::path write(const std::string& name, const std::string& contents) const
+  {
+    std::ofstream out(work / name, std::ios::binary);
+    out << contents;
+    BOOST_REQUIRE(out.good());
+    return work / name;
+  }
+
+  std::set<std::string> files() const
+  {
+    std::set<std::string> names;
+    for(const auto& entry : fs::directory_iterator(work))
+      names.insert(entry.path().filename().string());
+    return names;
+  }
+
+  Run run(const std::vector<std::string>& args, const std::string& program = MBP_CLI_PROGRAM) const
+  {
+    const std::string out = (root / "stdout.txt").string(), err = (root / "stderr.txt").string();
+    const std::string cwd = work.string();
+    std::vector<std::string> argv_strings{program};
+    argv_strings.insert(argv_strings.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for(std::string& a : argv_strings)
+      argv.push_back(&a[0]);
+    argv.push_back(nullptr);
+
+    const pid_t pid = ::fork();
+    BOOST_REQUIRE(pid >= 0);
+    if(pid == 0)
+    {
+      const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      if(o < 0 || e < 0 || ::chdir(cwd.c_str()) != 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0)
+        ::_exit(126);
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    int status = 0;
+    BOOST_REQUIRE(::waitpid(pid, &status, 0) == pid);
+    Run r;
+    r.exited = WIFEXITED(status);
+    r.code = r.exited ? WEXITSTATUS(status) : -1;
+    r.out = read_text(out);
+    r.err = read_text(err);
+    BOOST_TEST_MESSAGE("ran " << program << " ... -> " << (r.exited ? "exit " + std::to_string(r.code) : "signal")
+                       << "\nstderr: " << r.err);
+    BOOST_REQUIRE_MESSAGE(r.exited, "the program was killed by signal " << WTERMSIG(status) << "\n" << r.err);
+    BOOST_REQUIRE_MESSAGE(r.code != 126 && r.code != 127, "could not start " << program);
+    return r;
+  }
+
+  static std::string read_text(const fs::path& path)
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+};
+
+std::string lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return s;
+}
+
+bool contains(const std::string& text, const std::string& part)
+{
+  return lower(text).find(lower(part)) != std::string::npos;
+}
+
+// ---------------------------------------------------------------- reading the outputs
+
+struct Obj
+{
+  std::vector<std::array<double, 3> > v;
+  std::vector<std::array<double, 2> > vt;
+  std::vector<std::array<std::size_t, 3> > f;  // 0-based
+  std::size_t other_lines = 0;                 // lines that are not v, vt, f, comments or empty
+};
+
+// Reads the OBJ the program writes; every face corner must be "a/a" with a valid index.
+Obj read_obj(const fs::path& path)
+{
+  std::ifstream in(path);
+  BOOST_REQUIRE_MESSAGE(in.good(), "cannot open " << path);
+  Obj obj;
+  std::string line;
+  while(std::getline(in, line))
+  {
+    std::istringstream s(line);
+    std::string tag;
+    if(!(s >> tag) || tag[0] == '#')
+      continue;
+    if(tag == "v")
+    {
+      std::array<double, 3> p;
+      BOOST_REQUIRE_MESSAGE(s >> p[0] >> p[1] >> p[2], "bad line: " << line);
+      obj.v.push_back(p);
+    }
+    else if(tag == "vt")
+    {
+      std::array<double, 2> q;
+      BOOST_REQUIRE_MESSAGE(s >> q[0] >> q[1], "bad line: " << line);
+      obj.vt.push_back(q);
+    }
+    else if(tag == "f")
+    {
+      std::array<std::size_t, 3> face;
+      std::string corner;
+      for(std::size_t k = 0; k < 3; ++k)
+      {
+        BOOST_REQUIRE_MESSAGE(s >> corner, "face with fewer than 3 corners: " << line);
+        const std::size_t slash = corner.find('/');
+        BOOST_REQUIRE_MESSAGE(slash != std::string::npos, "corner without a UV index: " << line);
+        const std::string a = corner.substr(0, slash), b = corner.substr(slash + 1);
+        BOOST_REQUIRE_MESSAGE(a == b, "v and vt indices differ: " << line);
+        const long index = std::stol(a);
+        BOOST_REQUIRE_MESSAGE(index >= 1, "bad index: " << line);
+        face[k] = std::size_t(index - 1);
+      }
+      BOOST_REQUIRE_MESSAGE(!(s >> corner), "face with more than 3 corners: " << line);
+      obj.f.push_back(face);
+    }
+    else
+      ++obj.other_lines;
+  }
+  for(const auto& face : obj.f)
+    for(std::size_t i : face)
+      BOOST_REQUIRE(i < obj.v.size() && i < obj.vt.size());
+  return obj;
+}
+
+double signed_uv_area(const Obj& obj, const std::array<std::size_t, 3>& f)
+{
+  const auto &a = obj.vt[f[0]], &b = obj.vt[f[1]], &c = obj.vt[f[2]];
+  return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+}
+
+boost::property_tree::ptree parse_json(const std::string& text)
+{
+  boost::property_tree::ptree tree;
+  std::istringstream in(text);
+  BOOST_REQUIRE_NO_THROW(boost::property_tree::read_json(in, tree));
+  return tree;
+}
+
+// ---------------------------------------------------------------- meshes
+
+// The program's default mesh (examples/CMakeLists.txt picks it from the same mesh set).
+std::string default_mesh_path()
+{
+  return mbp_test::require_mesh(mbp_test::mesh_set() == "shared" ? "matthew_nefertiti.off" : "nefertiti.off");
+}
+
+std::vector<vertex_descriptor> border_loop(const Mesh& mesh)
+{
+  std::vector<vertex_descriptor> loop;
+  for(halfedge_descriptor h : CGAL::halfedges_around_face(mbp_test::longest_border(mesh), mesh))
+    loop.push_back(target(h, mesh));
+  return loop;
+}
+
+std::string off_text(const mbp_test::Soup& soup)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << "OFF\n" << soup.points.size() << " " << soup.faces.size() << " 0\n";
+  for(const auto& p : soup.points)
+    s << p[0] << " " << p[1] << " " << p[2] << "\n";
+  for(const auto& f : soup.faces)
+  {
+    s << f.size();
+    for(std::size_t i : f)
+      s << " " << i;
+    s << "\n";
+  }
+  return s.str();
+}
+
+// A 3x3 grid of the unit square split into 8 triangles; vertex 4 is the only interior vertex.
+const char* grid_off = "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0.3\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n"
+                       "3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 3 4 7\n3 3 7 6\n3 4 5 8\n3 4 8 7\n";
+
+// Checks the OBJ of a run against the input mesh: the vertices in input order with their
+// exact coordinates, one UV per vertex inside [0,1]^2, the input's faces, no flipped face.
+void check_obj_against_mesh(const Obj& obj, const Mesh& mesh)
+{
+  BOOST_TEST(obj.other_lines == 0u);
+  BOOST_REQUIRE_EQUAL(obj.v.size(), num_vertices(mesh));
+  BOOST_REQUIRE_EQUAL(obj.vt.size(), num_vertices(mesh));
+  BOOST_REQUIRE_EQUAL(obj.f.size(), num_faces(mesh));
+  std::size_t exact = 0;
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const auto& p = mesh.point(v);
+    const auto& q = obj.v[std::size_t(v)];
+    exact += (q[0] == p.x() && q[1] == p.y() && q[2] == p.z()) ? 1 : 0;
+  }
+  BOOST_TEST(exact == num_vertices(mesh), "vertices written exactly and in input order: " << exact);
+
+  // [0,1]^2 up to the rounding of the library's scaling
+  const double eps = 1e-12;
+  std::size_t outside = 0;
+  for(const auto& q : obj.vt)
+    outside += (std::isfinite(q[0]) && std::isfinite(q[1]) && q[0] >= -eps && q[0] <= 1. + eps &&
+                q[1] >= -eps && q[1] <= 1. + eps) ? 0 : 1;
+  BOOST_TEST(outside == 0u, outside << " UVs outside [0,1]^2");
+
+  std::size_t same_faces = 0, flipped = 0;
+  std::size_t i = 0;
+  for(auto f : faces(mesh))
+  {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      t[k++] = std::size_t(v);
+    same_faces += (t == obj.f[i]) ? 1 : 0;
+    flipped += (signed_uv_area(obj, obj.f[i]) > 0.) ? 0 : 1;
+    ++i;
+  }
+  BOOST_TEST(same_faces == num_faces(mesh), "faces written as in the input: " << same_faces);
+  BOOST_TEST(flipped == 0u, flipped << " flipped faces");
+}
+
+} // namespace
+
+// ---------------------------------------------------------------- successful runs
+
+BOOST_AUTO_TEST_CASE(default_run_writes_obj_svg_and_summary)
+{
+  const std::string path = default_mesh_path();
+  Mesh mesh;
+  mbp_test::read_mesh(path, mesh);
+  const std::size_t border_size = border_loop(mesh).size();
+
+  Scratch scratch;
+  const Run r = scratch.run({"--svg=layout.svg"});  // no INPUT, no OUTPUT
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  const std::string obj_name = fs::path(path).stem().string() + "_uv.obj";
+  BOOST_TEST((scratch.files() == std::set<std::string>{obj_name, "layout.svg"}));
+
+  // the summary: one line with V and F
+  BOOST_TEST(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+  BOOST_TEST(contains(r.out, "V " + std::to_string(num_vertices(mesh))), r.out);
+  BOOST_TEST(contains(r.out, "F " + std::to_string(num_faces(mesh))), r.out);
+  BOOST_TEST(contains(r.out, "angle distortion"));
+  BOOST_TEST(contains(r.out, "L2 stretch"));
+  BOOST_TEST(contains(r.out, "2 factorizations, 4 back-substitutions"), r.out);
+  BOOST_TEST(!contains(r.out, "nan"));
+
+  check_obj_against_mesh(read_obj(scratch.work / obj_name), mesh);
+
+  // the SVG: a complete document with the border as a closed polyline of all its vertices,
+  // the caption, the legend and the center; small for its number of faces
+  const std::string svg = Scratch::read_text(scratch.work / "layout.svg");
+  BOOST_TEST(svg.rfind("<?xml", 0) == 0u);
+  BOOST_TEST(contains(svg, "<svg xmlns=\"http://www.w3.org/2000/svg\""));
+  BOOST_TEST(svg.size() > 20u);
+  BOOST_TEST(svg.substr(svg.size() - 7) == "</svg>\n");
+  const std::size_t polygon = svg.find("<polygon");
+  BOOST_REQUIRE(polygon != std::string::npos);
+  const std::size_t points = svg.find("points=\"", polygon) + 8;
+  const std::string point_list = svg.substr(points, svg.find('"', points) - points);
+  BOOST_TEST(std::size_t(std::count(point_list.begin(), point_list.end(), ',')) == border_size);
+  BOOST_TEST(contains(svg, fs::path(path).filename().string()));
+  BOOST_TEST(contains(svg, "angle distortion"));
+  BOOST_TEST(contains(svg, "flipped faces: 0"));
+  BOOST_TEST(contains(svg, "center (vertex "));
+  BOOST_TEST(!contains(svg, "nan"));
+  BOOST_TEST(svg.size() < 40 * num_faces(mesh) + 30000, "SVG of " << svg.size() << " bytes");
+
+  // --output names the OBJ of the default input
+  Scratch named;
+  BOOST_REQUIRE_EQUAL(named.run({"--output=named.obj"}).code, 0);
+  BOOST_TEST((named.files() == std::set<std::string>{"named.obj"}));
+  check_obj_against_mesh(read_obj(named.work / "named.obj"), mesh);
+}
+
+BOOST_AUTO_TEST_CASE(obj_holds_the_library_result)
+{
+  const std::string path = default_mesh_path();
+  Mesh mesh;
+  mbp_test::read_mesh(path, mesh);
+  auto uv = mesh.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
+  SMP::Measured_conformal_parameterizer_3<Mesh> parameterizer;  // Eigen's LDLT
+  auto marked = mesh.add_property_map<vertex_descriptor, bool>("v:marked", false).first;
+  BOOST_REQUIRE(parameterizer.parameterize(mesh, mbp_test::longest_border(mesh), uv,
+                                           get(boost::vertex_index, mesh), marked) == SMP::OK);
+
+  std::vector<std::string> solvers{"ldlt"};
+#ifdef MBP_CLI_HAS_CHOLMOD
+  solvers.push_back("cholmod");
+#endif
+  for(const std::string& solver : solvers)
+  {
+    BOOST_TEST_CONTEXT("--solver=" << solver)
+    {
+      Scratch scratch;
+      const Run r = scratch.run({path, "out.obj", "--json", "--solver=" + solver});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      const boost::property_tree::ptree json = parse_json(r.out);
+      BOOST_TEST(json.get<std::string>("solver") == solver);
+      BOOST_TEST(json.get<std::size_t>("center.index") == std::size_t(parameterizer.center()));
+      const Obj obj = read_obj(scratch.work / "out.obj");
+      check_obj_against_mesh(obj, mesh);
+      // the same computation with LDLT; CHOLMOD's factorization differs in rounding only
+      const double tolerance = (solver == "ldlt") ? 1e-12 : 1e-8;
+      double worst = 0.;
+      for(vertex_descriptor v : vertices(mesh))
+      {
+        const auto& q = obj.vt[std::size_t(v)];
+        worst = (std::max)(worst, std::hypot(q[0] - get(uv, v).x(), q[1] - get(uv, v).y()));
+      }
+      BOOST_TEST(worst <= tolerance, "largest UV difference from the library: " << worst);
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(json_output_and_fixed_center)
+{
+  const std::string path = default_mesh_path();
+  Mesh mesh;
+  mbp_test::read_mesh(path, mesh);
+  // an interior vertex far from the start of the file
+  const std::vector<vertex_descriptor> loop = border_loop(mesh);
+  std::size_t n = num_vertices(mesh) / 3;
+  while(std::find(loop.begin(), loop.end(), vertex_descriptor(Mesh::size_type(n))) != loop.end())
+    ++n;
+
+  for(const bool fixed : {false, true})
+  {
+    BOOST_TEST_CONTEXT((fixed ? "--center=vertex:N" : "--center=poisson"))
+    {
+      Scratch scratch;
+      std::vector<std::string> args{path, "out.obj", "--json", "--svg=out.svg"};
+      args.push_back(fixed ? "--center=vertex:" + std::to_string(n) : std::string("--center=poisson"));
+      const Run r = scratch.run(args);
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      const boost::property_tree::ptree j = parse_json(r.out);
+      // every figure is a finite number (the program writes null for an infinite one, which
+      // these figures are not on this mesh)
+      for(const char* group : {"times", "io_times", "statistics", "quality", "border", "center.point", "center.uv"})
+        for(const auto& leaf : j.get_child(group))
+        {
+          if(leaf.second.empty() && leaf.first != "convex")
+          {
+            const boost::optional<double> x = leaf.second.get_value_optional<double>();
+            BOOST_TEST((x && std::isfinite(*x)), group << "." << leaf.first << " = " << leaf.second.data());
+          }
+        }
+
+      BOOST_TEST(j.get<std::string>("input") == path);
+      BOOST_TEST(j.get<std::string>("output") == "out.obj");
+      BOOST_TEST(j.get<std::string>("svg") == "out.svg");
+      BOOST_TEST(j.get<std::size_t>("vertices") == num_vertices(mesh));
+      BOOST_TEST(j.get<std::size_t>("faces") == num_faces(mesh));
+      BOOST_TEST(j.get<std::size_t>("border.vertices") == loop.size());
+      BOOST_TEST(j.get<double>("border.length") > 0.);
+      for(const char* key : {"preparation", "center", "distances", "border_map", "interior", "total"})
+        BOOST_TEST(j.get<double>(std::string("times.") + key) >= 0., key);
+      BOOST_TEST(j.get<double>("times.total") >= j.get<double>("times.interior"));
+      for(const char* key : {"angle_distortion", "l2_stretch", "quasi_conformal_mean"})
+        BOOST_TEST(std::isfinite(j.get<double>(std::string("quality.") + key)), key);
+      BOOST_TEST(j.get<double>("quality.l2_stretch") >= 1.);
+      BOOST_TEST(j.get<double>("quality.quasi_conformal_mean") >= 1.);
+      BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
+      // the paper's cost: 2 factorizations, 4 back-substitutions (3 when the center is given)
+      BOOST_TEST(j.get<int>("statistics.factorizations") == 2);
+      BOOST_TEST(j.get<int>("statistics.back_substitutions") == (fixed ? 3 : 4));
+
+      const std::size_t center = j.get<std::size_t>("center.index");
+      if(fixed)
+        BOOST_TEST(center == n);
+      // the center is the input's vertex of that index, given in file order
+      BOOST_REQUIRE(center < num_vertices(mesh));
+      const auto& p = mesh.point(vertex_descriptor(Mesh::size_type(center)));
+      std::vector<double> point;
+      for(const auto& child : j.get_child("center.point"))
+        point.push_back(child.second.get_value<double>());
+      BOOST_REQUIRE_EQUAL(point.size(), 3u);
+      BOOST_TEST(point[0] == p.x());
+      BOOST_TEST(point[1] == p.y());
+      BOOST_TEST(point[2] == p.z());
+      BOOST_TEST(contains(Scratch::read_text(scratch.work / "out.svg"), "center (vertex " + std::to_string(center) + ")"));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(reads_off_obj_ply_and_stl)
+{
+  Mesh mesh;
+  mbp_test::soup_to_mesh(mbp_test::bumpy_disk(), mesh);
+  std::size_t reference_center = 0;
+  for(const std::string ext : {"off", "obj", "ply", "stl"})
+  {
+    BOOST_TEST_CONTEXT("." << ext)
+    {
+      Scratch scratch;
+      const fs::path input = scratch.work / ("disk." + ext);
+      BOOST_REQUIRE(CGAL::IO::write_polygon_mesh(input.string(), mesh, CGAL::parameters::stream_precision(17)));
+      const Run r = scratch.run({input.filename().string(), "--json"});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      BOOST_TEST(fs::exists(scratch.work / "disk_uv.obj"));  // default OUTPUT
+      const boost::property_tree::ptree j = parse_json(r.out);
+      BOOST_TEST(j.get<std::size_t>("vertices") == num_vertices(mesh));
+      BOOST_TEST(j.get<std::size_t>("faces") == num_faces(mesh));
+      BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
+      const std::size_t center = j.get<std::size_t>("center.index");
+      if(ext == "off")
+        reference_center = center;
+      else if(ext != "stl")  // STL numbers its vertices in order of first appearance
+        BOOST_TEST(center == reference_center);
+      const Obj obj = read_obj(scratch.work / "disk_uv.obj");
+      BOOST_TEST(obj.v.size() == num_vertices(mesh));
+      BOOST_TEST(obj.vt.size() == num_vertices(mesh));
+      BOOST_TEST(obj.f.size() == num_faces(mesh));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(generated_mesh_when_the_default_mesh_is_missing)
+{
+  Scratch scratch;
+  const Run r = scratch.run({"--json"}, MBP_CLI_NO_DEFAULT_MESH_PROGRAM);
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  BOOST_TEST(contains(r.err, "does not exist"));
+  BOOST_TEST(contains(r.err, "generated"));
+  BOOST_TEST((scratch.files() == std::set<std::string>{"curved_disk_uv.obj"}));
+  const boost::property_tree::ptree j = parse_json(r.out);
+  BOOST_TEST(j.get<bool>("generated_mesh"));
+  const Obj obj = read_obj(scratch.work / "curved_disk_uv.obj");
+  BOOST_TEST(obj.v.size() == j.get<std::size_t>("vertices"));
+  BOOST_TEST(obj.vt.size() == obj.v.size());
+  BOOST_TEST(obj.f.size() == j.get<std::size_t>("faces"));
+  BOOST_TEST(obj.f.size() > 1000u);
+  // a curved surface: not all z are equal
+  double zmin = obj.v[0][2], zmax = obj.v[0][2];
+  for(const auto& p : obj.v)
+  {
+    zmin = (std::min)(zmin, p[2]);
+    zmax = (std::max)(zmax, p[2]);
+  }
+  BOOST_TEST(zmax - zmin > 0.1);
+  std::size_t flipped = 0;
+  for(const auto& f : obj.f)
+    flipped += (signed_uv_area(obj, f) > 0.) ? 0 : 1;
+  BOOST_TEST(flipped == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(isolated_vertices_are_left_out)
+{
+  // the grid plus an unused vertex 9
+  std::string off = grid_off;
+  off.replace(off.find("9 8 0"), 5, "10 8 0");
+  off.insert(off.find("3 0 1 4"), "5 5 5\n");
+  Scratch scratch;
+  scratch.write("grid.off", off);
+  Run r = scratch.run({"grid.off", "out.obj", "--json"});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  BOOST_TEST(contains(r.err, "in no face"));
+  BOOST_TEST(parse_json(r.out).get<std::size_t>("isolated_vertices") == 1u);
+  const Obj obj = read_obj(scratch.work / "out.obj");
+  BOOST_TEST(obj.v.size() == 9u);
+  BOOST_TEST(obj.vt.size() == 9u);
+  BOOST_TEST(obj.f.size() == 8u);
+  // the unused vertex cannot be the center
+  r = scratch.run({"grid.off", "out2.obj", "--center=vertex:9"});
+  BOOST_TEST(r.code == 1);
+  BOOST_TEST(contains(r.err, "in no face"));
+  BOOST_TEST(!fs::exists(scratch.work / "out2.obj"));
+}
+
+BOOST_AUTO_TEST_CASE(help)
+{
+  Scratch scratch;
+  const Run r = scratch.run({"--help"});
+  BOOST_TEST(r.code == 0);
+  BOOST_TEST(contains(r.out, "usage: measured_parameterization"));
+  for(const char* option : {"--center=vertex:N", "--distance=poisson", "--svg=FILE", "--json", "--solver", "_uv.obj"})
+    BOOST_TEST(contains(r.out, option), option);
+  BOOST_TEST(scratch.files().empty());
+}
+
+// ---------------------------------------------------------------- bad input
+
+namespace {
+
+struct Bad_case
+{
+  std::string name;
+  std::vector<std::pair<std::string, std::string> > files;  // written into the work directory
+  std::vector<std::string> args;
+  int code;                                                 // expected exit status
+  std::vector<std::string> messages;                        // expected in stderr (any case)
+};
+
+// A binary little-endian PLY of the grid, with the x coordinate of vertex 4 set to NaN
+// (CGAL's binary reader lets it through: the library must reject it).
+std::string binary_ply_with_nan()
+{
+  std::string s = "ply\nformat binary_little_endian 1.0\nelement vertex 9\nproperty float x\n"
+                  "property float y\nproperty float z\nelement face 8\n"
+                  "property list uchar int vertex_indices\nend_header\n";
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float p[9][3] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {nan, 1, 0.3f},
+                         {2, 1, 0}, {0, 2, 0}, {1, 2, 0}, {2, 2, 0}};
+  const std::int32_t f[8][3] = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {3, 4, 7}, {3, 7, 6}, {4, 5, 8}, {4, 8, 7}};
+  BOOST_REQUIRE(std::uint32_t(1) == *reinterpret_cast<const unsigned char*>(&f[0][1]));  // little-endian host
+  for(const auto& q : p)
+    s.append(reinterpret_cast<const char*>(q), sizeof(q));
+  for(const auto& t : f)
+  {
+    s += char(3);
+    s.append(reinterpret_cast<const char*>(t), sizeof(t));
+  }
+  return s;
+}
+
+std::vector<Bad_case> bad_cases()
+{
+  const std::string grid = grid_off;
+  std::string zero_area = grid;  // vertex 4 moved onto the edge (0, 1): face 0 has no area
+  zero_area.replace(zero_area.find("1 1 0.3"), 7, "0.5 0 0");
+  std::string nan_grid = grid;
+  nan_grid.replace(nan_grid.find("1 1 0.3"), 7, "nan 1 0.3");
+  std::string inf_obj = "v 0 0 0\nv 1 0 0\nv 0 1 inf\nv 1 1 0\nf 1 2 3\nf 2 4 3\n";
+  const std::string quads = "OFF\n9 4 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n"
+                            "4 0 1 4 3\n4 1 2 5 4\n4 3 4 7 6\n4 4 5 8 7\n";
+  const std::string octahedron = "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                                 "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+  // three triangles on one edge
+  const std::string non_manifold = "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 -1 1\n3 0 1 2\n3 0 2 3\n3 0 2 4\n";
+  // the grid and a separate triangle
+  std::string two_components = grid;
+  two_components.replace(two_components.find("9 8 0"), 5, "12 9 0");
+  two_components.insert(two_components.find("3 0 1 4"), "5 0 0\n6 0 0\n5 1 0\n");
+  two_components += "3 9 10 11\n";
+
+  const std::vector<std::string> out{"out.obj", "--svg=out.svg"};
+  auto with = [&out](std::vector<std::string> args) {
+    args.insert(args.end(), out.begin(), out.end());
+    return args;
+  };
+  std::vector<Bad_case> cases = {
+    {"quad mesh", {{"quads.off", quads}}, with({"quads.off"}), 1, {"not triangular", "4 vertices"}},
+    {"closed octahedron", {{"octahedron.off", octahedron}}, with({"octahedron.off"}), 1, {"closed", "no border"}},
+    {"NaN coordinate (text)", {{"nan.off", nan_grid}}, with({"nan.off"}), 1, {"non-finite", "'nan'", "line 7"}},
+    {"NaN coordinate (binary)", {{"nan.ply", binary_ply_with_nan()}}, with({"nan.ply"}), 1, {"non-finite", "vertex 4"}},
+    {"infinite coordinate", {{"inf.obj", inf_obj}}, with({"inf.obj"}), 1, {"non-finite", "'inf'"}},
+    {"zero-area triangle", {{"flat.off", zero_area}}, with({"flat.off"}), 1, {"zero area", "face 0"}},
+    {"nonexistent file", {}, with({"missing.off"}), 1, {"missing.off", "no such file"}},
+    {"directory", {}, with({"."}), 1, {"directory"}},
+    {"empty file", {{"empty.off", ""}}, with({"empty.off"}), 1, {"empty"}},
+    {"not a mesh file", {{"text.off", "hello world\n"}}, with({"text.off"}), 1, {"not a valid .off"}},
+    {"unsupported extension", {{"grid.xyz", grid}}, with({"grid.xyz"}), 1, {"unsupported", ".xyz"}},
+    {"no faces", {{"points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"}}, with({"points.off"}), 1, {"no faces"}},
+    {"non-manifold", {{"fin.off", non_manifold}}, with({"fin.off"}), 1, {"not a polygon mesh", "manifold"}},
+    {"two components", {{"two.off", two_components}}, with({"two.off"}), 1, {"2 connected components"}},
+    {"handle", {{"torus.off", off_text(mbp_test::punctured_torus())}}, with({"torus.off"}), 1, {"not a topological disc"}},
+    {"unknown option", {{"grid.off", grid}}, with({"grid.off", "--frobnicate"}), 2, {"unknown option", "--frobnicate"}},
+    {"unknown center", {{"grid.off", grid}}, with({"grid.off", "--center=middle"}), 2, {"--center", "middle"}},
+    {"bad vertex index", {{"grid.off", grid}}, with({"grid.off", "--center=vertex:4x"}), 2, {"bad vertex index"}},
+    {"unknown distance", {{"grid.off", grid}}, with({"grid.off", "--distance=geodesic"}), 2, {"--distance", "geodesic"}},
+    {"unknown solver", {{"grid.off", grid}}, with({"grid.off", "--solver=lu"}), 2, {"--solver", "lu"}},
+    {"svg without file", {{"grid.off", grid}}, {"grid.off", "out.obj", "--svg"}, 2, {"--svg"}},
+    {"too many arguments", {{"grid.off", grid}}, with({"grid.off", "a.obj", "b.obj"}), 2, {"too many arguments"}},
+    {"center on the border", {{"grid.off", grid}}, with({"grid.off", "--center=vertex:0"}), 1, {"vertex:0", "border"}},
+    {"center out of range", {{"grid.off", grid}}, with({"grid.off", "--center=vertex:9"}), 1, {"vertex:9", "out of range"}},
+    {"huge center index", {{"grid.off", grid}}, with({"grid.off", "--center=vertex:99999999999999999999999"}), 2, {"out of range"}},
+    {"output directory missing", {{"grid.off", grid}}, {"grid.off", "no/such/dir/out.obj", "--svg=out.svg"}, 1, {"cannot write", "no/such/dir/out.obj"}},
+    {"svg directory missing", {{"grid.off", grid}}, {"grid.off", "out.obj", "--svg=no/dir/out.svg"}, 1, {"cannot write", "no/dir/out.svg"}},
+    {"output is a directory", {{"grid.off", grid}}, {"grid.off", ".", "--svg=out.svg"}, 1, {"cannot write", "directory"}},
+    {"same output and svg", {{"grid.off", grid}}, {"grid.off", "out.obj", "--svg=out.obj"}, 2, {"same file"}},
+    {"output given twice", {{"grid.off", grid}}, {"grid.off", "a.obj", "--output=b.obj"}, 2, {"given twice"}},
+  };
+  return cases;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(bad_input_fails_cleanly)
+{
+  for(const Bad_case& c : bad_cases())
+  {
+    BOOST_TEST_CONTEXT("case: " << c.name)
+    {
+      Scratch scratch;
+      std::set<std::string> inputs;
+      for(const auto& f : c.files)
+      {
+        scratch.write(f.first, f.second);
+        inputs.insert(f.first);
+      }
+      const Run r = scratch.run(c.args);
+      BOOST_TEST(r.code == c.code);
+      BOOST_TEST(contains(r.err, "error:"), r.err);
+      for(const std::string& m : c.messages)
+        BOOST_TEST(contains(r.err, m), "'" << m << "' not in: " << r.err);
+      BOOST_TEST(r.out.empty(), r.out);
+      const std::set<std::string> left = scratch.files();
+      std::string listing;
+      for(const std::string& f : left)
+        listing += " " + f;
+      BOOST_TEST((left == inputs), "files in the working directory:" << listing);
+    }
+  }
+}
