@@ -25,10 +25,10 @@ namespace Surface_mesh_parameterization {
 /// distance from the whole border loop (all its vertices are sources) is computed with
 /// `Method`, and the center is its maximum over the interior vertices.
 ///
-/// Ties, which BGDM has on symmetric shapes (two maxima on the paper's ellipse): values
-/// within a relative `1e-9` of the maximum count as tied, and the center is the interior
-/// vertex nearest to the mean position of the tied maxima (then the smallest patch index),
-/// as for `Poisson_center_locator`.
+/// Ties, which BGDM has on symmetric shapes (two maxima on the paper's ellipse), are broken
+/// as for `Poisson_center_locator`: by the distance to the mean position of the tied maxima,
+/// taking the nearest vertex alone at its distance, which on a mirror-symmetric mesh lies
+/// on the mirror (on the ellipse: the vertex between the two maxima).
 ///
 /// Cost: one multi-source distance computation. The method's precomputation is shared with
 /// a `Geodesic_border_distance` of the same `Method` on the same patch.

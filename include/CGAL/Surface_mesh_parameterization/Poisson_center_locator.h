@@ -24,11 +24,15 @@ namespace Surface_mesh_parameterization {
 /// vertices, of the boundary Poisson distance map (`boundary_poisson_distance_map()`,
 /// cotangent weights, the border loop constrained).
 ///
-/// Ties: values within a relative `1e-9` of the maximum count as tied; among several tied
-/// maxima the center is the interior vertex nearest to their mean position (3D Euclidean
-/// distance), then the one of smallest patch index. The result is therefore deterministic
-/// for a given mesh, and, since the map is invariant under rigid motions and uniform
-/// scaling, so is the center.
+/// Ties: values within a relative `1e-9` of the maximum count as tied. Among several tied
+/// maxima, the interior vertices are ranked by their distance to the mean position of the
+/// tied maxima, and the center is the nearest vertex that is alone at its distance
+/// (vertices at a shared distance are skipped; if every distance is shared, the smallest
+/// patch index among the nearest). A symmetry of the mesh permutes the vertices at each
+/// distance, so a vertex alone at its distance is fixed by every symmetry: on a
+/// mirror-symmetric mesh the center lies on the mirror whenever a vertex there allows it.
+/// The result is deterministic for a given mesh, and, since the map is invariant under
+/// rigid motions and uniform scaling, so is the center.
 ///
 /// Cost: one back-substitution with the patch's factorization of the interior cotangent
 /// Laplacian, which it creates when it is the first to need it; the discrete conformal

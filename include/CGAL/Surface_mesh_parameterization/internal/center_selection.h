@@ -9,10 +9,13 @@
 // The deterministic argmax shared by the center locators (METHOD.md section 3, step 1).
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -23,10 +26,21 @@ namespace internal {
 constexpr double center_tie_tolerance = 1e-9;
 
 // Returns the interior vertex (local index) that maximizes `values`, or -1 when there is no
-// interior vertex or a value is not finite. Ties: every interior vertex whose value is within
-// `center_tie_tolerance * |max|` of the maximum is a tied maximum; when there are several,
-// the center is the interior vertex nearest (3D Euclidean distance) to the mean position of
-// the tied maxima, and among equally near ones the smallest local index.
+// interior vertex or a value is not finite.
+//
+// Ties: every interior vertex whose value is within `center_tie_tolerance * |max|` of the
+// maximum is a tied maximum. When there are several, the center is chosen by the distance
+// (3D, Euclidean) of the interior vertices to the mean position m of the tied maxima: the
+// nearest vertex when it is the only one at its distance; otherwise the vertices at that
+// distance are set aside and the next distance is examined, and so on (distances equal
+// within 1e-12 of the squared bounding box diagonal count as equal). If no distance has a
+// single vertex, the smallest local index among the nearest ones is taken.
+//
+// Why: a symmetry of the mesh maps the tied maxima, hence m, onto themselves, so it permutes
+// the vertices at each distance from m; a distance held by one vertex is held by a vertex
+// that every symmetry fixes. So on a mirror-symmetric patch the center lies on the mirror
+// (for example on the paper's ellipse, whose boundary geodesic distance has two maxima, the
+// center is the vertex between them) whenever such a vertex exists.
 template <class Patch>
 int argmax_with_tie_break(const Patch& patch, const std::vector<double>& values)
 {
@@ -57,18 +71,29 @@ int argmax_with_tie_break(const Patch& patch, const std::vector<double>& values)
     return first;
   mean /= double(tied);
 
-  int center = -1;
-  double nearest = std::numeric_limits<double>::infinity();
-  for(int i : interior)  // increasing local index: strict '<' keeps the smallest on ties
+  Eigen::AlignedBox3d box;
+  for(int i : interior)
+    box.extend(patch.point(static_cast<std::size_t>(i)));
+  const double equal = 1e-12 * box.diagonal().squaredNorm();
+
+  std::vector<std::pair<double, int> > by_distance;
+  by_distance.reserve(interior.size());
+  for(int i : interior)
+    by_distance.emplace_back((patch.point(static_cast<std::size_t>(i)) - mean).squaredNorm(), i);
+  std::sort(by_distance.begin(), by_distance.end());
+  for(std::size_t k = 0; k < by_distance.size(); )
   {
-    const double d2 = (patch.point(static_cast<std::size_t>(i)) - mean).squaredNorm();
-    if(d2 < nearest)
-    {
-      nearest = d2;
-      center = i;
-    }
+    std::size_t end = k + 1;
+    while(end < by_distance.size() && by_distance[end].first - by_distance[k].first <= equal)
+      ++end;
+    if(end == k + 1)
+      return by_distance[k].second;
+    k = end;
   }
-  return center;
+  int smallest = by_distance.front().second;  // no distance held by a single vertex
+  for(std::size_t k = 1; k < by_distance.size() && by_distance[k].first - by_distance[0].first <= equal; ++k)
+    smallest = (std::min)(smallest, by_distance[k].second);
+  return smallest;
 }
 
 } // namespace internal
