@@ -100,9 +100,9 @@ struct Parameterization_result
 };
 
 template <class SolverTraits>
-Parameterization_result parameterize(const Mesh& mesh, halfedge_descriptor bhd,
-                                     const Command_line_center_locator& locator,
-                                     UV_map uvmap, Vertex_flag_map parameterized)
+Parameterization_result run_parameterization(const Mesh& mesh, halfedge_descriptor bhd,
+                                             const Command_line_center_locator& locator,
+                                             UV_map uvmap, Vertex_flag_map parameterized)
 {
   typedef SMP::Measured_conformal_parameterizer_3<Mesh, Command_line_center_locator,
                                                   SMP::Poisson_border_distance<Mesh>,
@@ -198,7 +198,7 @@ int main(int argc, char** argv)
   }
   const double read_seconds = seconds_since(start);
 
-  // Output names, checked before any work.
+  // Output names, checked before the parameterization.
   if(options.output.empty())
     options.output = (generated ? std::string("curved_disk") : fs::path(options.input).stem().string()) + "_uv.obj";
   if(!options.svg.empty())
@@ -251,10 +251,10 @@ int main(int argc, char** argv)
   Parameterization_result result;
 #ifdef MBP_WITH_CHOLMOD
   if(options.solver == mbp_cli::Solver::cholmod)
-    result = parameterize<SMP::Cholmod_supernodal_cholesky_traits>(mesh, bhd, locator, uvmap, parameterized);
+    result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(mesh, bhd, locator, uvmap, parameterized);
   else
 #endif
-    result = parameterize<CGAL::Default>(mesh, bhd, locator, uvmap, parameterized);
+    result = run_parameterization<CGAL::Default>(mesh, bhd, locator, uvmap, parameterized);
 
   if(result.status != SMP::OK)
   {

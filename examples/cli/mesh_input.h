@@ -10,7 +10,6 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/number_type_config.h>
 
 #include <algorithm>
 #include <array>

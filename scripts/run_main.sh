@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# The main job: installs what is missing, builds in Release (build/), and flattens the
+# default mesh with the command-line program, writing build/measured_parameterization.obj
+# and build/measured_parameterization.svg and printing the one-line summary.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j"$(nproc)"
+build/examples/measured_parameterization \
+  --output=build/measured_parameterization.obj \
+  --svg=build/measured_parameterization.svg
