@@ -17,10 +17,13 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
+#include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
+#include <CGAL/Surface_mesh_parameterization/Geodesic_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
+#include <CGAL/Surface_mesh_parameterization/Straightest_geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 #ifdef MBP_WITH_CHOLMOD
 #include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
@@ -57,32 +60,93 @@ typedef Mesh::Property_map<vertex_descriptor, bool>       Vertex_flag_map;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
+typedef SMP::Heat_method_geodesics<CGAL::Heat_method_3::Direct>             Heat;
+typedef SMP::Heat_method_geodesics<CGAL::Heat_method_3::Intrinsic_Delaunay> Heat_idt;
 
 namespace {
 
 const int exit_failure = 1;  // the input cannot be parameterized, or a file cannot be written
 const int exit_usage = 2;    // command-line error
 
-// The center locator of the command line (a model of `MeasuredCenterLocator`): the user's
-// vertex (`--center=vertex:N`, through `Fixed_center`) or the Poisson center, chosen at run
-// time, so that the method is instantiated once per solver rather than once per solver and
-// locator.
+// The center locator of the command line (a model of `MeasuredCenterLocator`), chosen at run
+// time among the user's vertex (`--center=vertex:N`, through `Fixed_center`), the Poisson
+// center and the geodesic centers, so that the method is instantiated once per solver
+// rather than once per solver, locator and distance.
 class Command_line_center_locator
 {
 public:
-  Command_line_center_locator() = default;
-  explicit Command_line_center_locator(vertex_descriptor v) : m_fixed(v), m_use_fixed(true) { }
+  explicit Command_line_center_locator(const std::string& name = "poisson") : m_name(name) { }
+  explicit Command_line_center_locator(vertex_descriptor v) : m_fixed(v), m_name("vertex") { }
 
   template <class Patch>
   SMP::Error_code locate_center(Patch& patch, std::size_t& center) const
   {
-    return m_use_fixed ? m_fixed.locate_center(patch, center) : m_poisson.locate_center(patch, center);
+    if(m_name == "vertex")
+      return m_fixed.locate_center(patch, center);
+    if(m_name == "geodesic:fast-marching")
+      return SMP::Geodesic_center_locator<Mesh, SMP::Fast_marching_geodesics>().locate_center(patch, center);
+    if(m_name == "geodesic:dijkstra")
+      return SMP::Geodesic_center_locator<Mesh, SMP::Dijkstra_geodesics>().locate_center(patch, center);
+    if(m_name == "geodesic:heat")
+      return SMP::Geodesic_center_locator<Mesh, Heat>().locate_center(patch, center);
+    if(m_name == "geodesic:heat-idt")
+      return SMP::Geodesic_center_locator<Mesh, Heat_idt>().locate_center(patch, center);
+    if(m_name == "geodesic:exact")
+      return SMP::Geodesic_center_locator<Mesh, SMP::Exact_geodesics>().locate_center(patch, center);
+    return SMP::Poisson_center_locator<Mesh>().locate_center(patch, center);
   }
 
 private:
   SMP::Fixed_center<Mesh> m_fixed;
-  SMP::Poisson_center_locator<Mesh> m_poisson;
-  bool m_use_fixed = false;
+  std::string m_name;
+};
+
+// The border distance of the command line (a model of `MeasuredBorderDistance`), chosen at
+// run time: Poisson, a geodesic method, or straightest geodesics.
+class Command_line_border_distance
+{
+public:
+  explicit Command_line_border_distance(const std::string& name = "poisson") : m_name(name) { }
+
+  template <class Patch>
+  SMP::Error_code prepare(Patch& patch) const
+  {
+    return dispatch([&patch](const auto& policy) { return policy.prepare(patch); });
+  }
+
+  template <class Patch>
+  SMP::Error_code compute_border_distances(Patch& patch, std::size_t center, std::vector<double>& distances) const
+  {
+    return dispatch([&](const auto& policy) { return policy.compute_border_distances(patch, center, distances); });
+  }
+
+  // the border vertices straightest geodesics could not reach in the last call
+  const SMP::Straightest_geodesic_border_distance<Mesh>::Failure& straightest_failure() const
+  {
+    return m_straightest.last_failure();
+  }
+
+private:
+  template <class F>
+  SMP::Error_code dispatch(const F& f) const
+  {
+    if(m_name == "fast-marching")
+      return f(SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics>());
+    if(m_name == "dijkstra")
+      return f(SMP::Geodesic_border_distance<Mesh, SMP::Dijkstra_geodesics>());
+    if(m_name == "heat")
+      return f(SMP::Geodesic_border_distance<Mesh, Heat>());
+    if(m_name == "heat-idt")
+      return f(SMP::Geodesic_border_distance<Mesh, Heat_idt>());
+    if(m_name == "exact")
+      return f(SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics>());
+    if(m_name == "straightest")
+      return f(m_straightest);
+    return f(SMP::Poisson_border_distance<Mesh>());
+  }
+
+  std::string m_name;
+  SMP::Straightest_geodesic_border_distance<Mesh> m_straightest;  // its failure record is shared by copies
 };
 
 // What a parameterization produced, copied from the parameterizer's report and record
@@ -97,19 +161,22 @@ struct Parameterization_result
   int factorizations = 0, back_substitutions = 0;
   double factorization_seconds = 0., back_substitution_seconds = 0.;
   double degenerate_face_threshold = 0.;
+  SMP::Straightest_geodesic_border_distance<Mesh>::Failure straightest_failure;
 };
 
 template <class SolverTraits>
 Parameterization_result run_parameterization(const Mesh& mesh, halfedge_descriptor bhd,
                                              const Command_line_center_locator& locator,
+                                             const Command_line_border_distance& distance,
                                              UV_map uvmap, Vertex_flag_map parameterized)
 {
   typedef SMP::Measured_conformal_parameterizer_3<Mesh, Command_line_center_locator,
-                                                  SMP::Poisson_border_distance<Mesh>,
+                                                  Command_line_border_distance,
                                                   SolverTraits>                   Parameterizer;
-  Parameterizer parameterizer(locator);
+  Parameterizer parameterizer(locator, distance);
   Parameterization_result r;
   r.status = parameterizer.parameterize(mesh, bhd, uvmap, get(boost::vertex_index, mesh), parameterized);
+  r.straightest_failure = distance.straightest_failure();
 
   const typename Parameterizer::Report& report = parameterizer.last_report();
   r.center = parameterizer.center();
@@ -221,7 +288,8 @@ int main(int argc, char** argv)
       return fail(f);
   }
 
-  Command_line_center_locator locator;
+  Command_line_center_locator locator(options.center);
+  const Command_line_border_distance distance(options.distance);
   if(options.fixed_center)
   {
     // Surface_mesh numbers the vertices in the order they were added: the file order.
@@ -251,10 +319,11 @@ int main(int argc, char** argv)
   Parameterization_result result;
 #ifdef MBP_WITH_CHOLMOD
   if(options.solver == mbp_cli::Solver::cholmod)
-    result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(mesh, bhd, locator, uvmap, parameterized);
+    result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(mesh, bhd, locator, distance, uvmap,
+                                                                           parameterized);
   else
 #endif
-    result = run_parameterization<CGAL::Default>(mesh, bhd, locator, uvmap, parameterized);
+    result = run_parameterization<CGAL::Default>(mesh, bhd, locator, distance, uvmap, parameterized);
 
   if(result.status != SMP::OK)
   {
@@ -266,6 +335,12 @@ int main(int argc, char** argv)
       f.detail = mbp_cli::find_non_finite_vertex(mesh);
     else if(result.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)
       f.detail = "the longest border touches itself, a vertex is non-manifold, or the surface has handles";
+    else if(result.status == SMP::ERROR_DISTANCE_COMPUTATION_FAILED && options.distance == "straightest" &&
+            result.straightest_failure.unreachable > 0)
+      f.detail = "the straightest geodesic from the center (vertex " + std::to_string(std::size_t(result.center)) +
+                 ") does not reach border vertex " + std::to_string(std::size_t(result.straightest_failure.vertex)) +
+                 " (" + std::to_string(result.straightest_failure.unreachable) + " of " +
+                 std::to_string(result.border.size()) + " border vertices are not reached)";
     return fail(f);
   }
 
@@ -352,7 +427,7 @@ int main(int argc, char** argv)
     layout.title = mesh_name;
     layout.caption.push_back(std::to_string(obj_vertices.size()) + " vertices, " + std::to_string(num_faces(mesh)) +
                              " faces, border of " + std::to_string(result.border.size()) + " vertices, center: " +
-                             (options.fixed_center ? "given vertex" : "Poisson center"));
+                             options.center_name() + " center, " + options.distance + " distances");
     layout.caption.push_back("angle distortion " + mbp_cli::rounded(quality.angle_distortion) + ",  L2 stretch " +
                              mbp_cli::rounded(quality.l2_stretch) + ",  quasi-conformal mean " +
                              mbp_cli::rounded(quality.quasi_conformal_mean) + ",  flipped faces " +
@@ -401,7 +476,7 @@ int main(int argc, char** argv)
     else
       j.member("svg", options.svg);
     j.member("solver", mbp_cli::solver_name(options.solver));
-    j.member("center_locator", options.fixed_center ? "vertex" : "poisson");
+    j.member("center_locator", options.fixed_center ? std::string("vertex") : options.center);
     j.member("border_distance", options.distance);
     j.member("vertices", obj_vertices.size());
     j.member("faces", std::size_t(num_faces(mesh)));
@@ -454,7 +529,8 @@ int main(int argc, char** argv)
     using mbp_cli::rounded;
     std::cout << mesh_name << ": V " << obj_vertices.size() << ", F " << num_faces(mesh)
               << " | border " << result.border.size() << " vertices, length " << rounded(border_length)
-              << " | center " << center_index << " (" << (options.fixed_center ? "given" : "poisson") << ")"
+              << " | center " << center_index << " (" << options.center_name() << ")"
+              << " | distances " << options.distance
               << " | seconds: preparation " << rounded(result.preparation, 3) << ", center "
               << rounded(result.center_time, 3) << ", distances " << rounded(result.distances, 3)
               << ", border map " << rounded(result.border_map, 3) << ", interior " << rounded(result.interior, 3)

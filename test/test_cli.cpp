@@ -465,6 +465,44 @@ BOOST_AUTO_TEST_CASE(json_output_and_fixed_center)
   }
 }
 
+BOOST_AUTO_TEST_CASE(geodesic_centers_and_distances)
+{
+  // exact geodesics reproduce a flat star-shaped disk: no angle distortion, L2 stretch 1,
+  // at the cost of one factorization and two back-substitutions (BGDM center)
+  {
+    Scratch scratch;
+    scratch.write("ellipse.off", off_text(mbp_test::hex_disk(10, 2., 1.)));
+    const Run r = scratch.run({"ellipse.off", "out.obj", "--json", "--center=geodesic:exact", "--distance=exact"});
+    BOOST_REQUIRE_EQUAL(r.code, 0);
+    const boost::property_tree::ptree j = parse_json(r.out);
+    BOOST_TEST(j.get<std::string>("center_locator") == "geodesic:exact");
+    BOOST_TEST(j.get<std::string>("border_distance") == "exact");
+    BOOST_TEST(j.get<std::size_t>("center.index") == 0u);  // the ellipse's center
+    BOOST_TEST(j.get<double>("quality.angle_distortion") < 1e-9);
+    BOOST_TEST(std::abs(j.get<double>("quality.l2_stretch") - 1.) < 1e-9);
+    BOOST_TEST(j.get<int>("statistics.factorizations") == 1);
+    BOOST_TEST(j.get<int>("statistics.back_substitutions") == 2);
+  }
+  // on a real open patch every method runs, and geodesic borders beat the Poisson border
+  // (the paper's Table 1: MBPGP below MBPPP)
+  const std::string path = default_mesh_path();
+  double poisson = 0.;
+  for(const std::string d : {"poisson", "fast-marching", "dijkstra", "heat", "heat-idt", "exact"})
+    BOOST_TEST_CONTEXT("--distance=" << d)
+    {
+      Scratch scratch;
+      const Run r = scratch.run({path, "out.obj", "--json", "--distance=" + d, "--center=geodesic:heat"});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      const boost::property_tree::ptree j = parse_json(r.out);
+      BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
+      const double angle = j.get<double>("quality.angle_distortion");
+      if(d == "poisson")
+        poisson = angle;
+      else if(d != "dijkstra")
+        BOOST_TEST(angle < poisson);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(reads_off_obj_ply_and_stl)
 {
   Mesh mesh;
@@ -640,6 +678,10 @@ std::vector<Bad_case> bad_cases()
     {"unknown center", {{"grid.off", grid}}, with({"grid.off", "--center=middle"}), 2, {"--center", "middle"}},
     {"bad vertex index", {{"grid.off", grid}}, with({"grid.off", "--center=vertex:4x"}), 2, {"bad vertex index"}},
     {"unknown distance", {{"grid.off", grid}}, with({"grid.off", "--distance=geodesic"}), 2, {"--distance", "geodesic"}},
+    {"unknown geodesic method", {{"grid.off", grid}}, with({"grid.off", "--center=geodesic:sloppy"}), 2,
+     {"geodesic method", "sloppy"}},
+    {"straightest geodesic misses a border vertex", {{"c.off", off_text(mbp_test::c_shape())}},
+     with({"c.off", "--distance=straightest"}), 1, {"straightest geodesic", "does not reach border vertex"}},
     {"unknown solver", {{"grid.off", grid}}, with({"grid.off", "--solver=lu"}), 2, {"--solver", "lu"}},
     {"svg without file", {{"grid.off", grid}}, {"grid.off", "out.obj", "--svg"}, 2, {"--svg"}},
     {"too many arguments", {{"grid.off", grid}}, with({"grid.off", "a.obj", "b.obj"}), 2, {"too many arguments"}},

@@ -142,33 +142,47 @@ inline Soup hex_disk(int rings, double a = 1., double b = 1.)
   return s;
 }
 
-// A flat L-shaped domain, [0,2]^2 minus (1,2]^2, on a grid of step 1/n, every square split
-// along the same diagonal. Seen from any interior point, its border is far from convex.
-inline Soup l_shape(int n = 8)
+// A flat grid of step 1/n over [0, cells_x/n] x [0, cells_y/n], every square split along the
+// same diagonal, without the squares (i, j) for which `removed(i, j)` holds. The removed
+// squares must leave a disk (cut a notch from the border, not a hole).
+template <class Removed>
+Soup notched_grid(int n, int cells_x, int cells_y, const Removed& removed)
 {
   Soup s;
-  std::vector<std::vector<long> > id(static_cast<std::size_t>(2 * n + 1),
-                                     std::vector<long>(static_cast<std::size_t>(2 * n + 1), -1));
-  auto kept = [n](int i, int j) { return !(i > n && j > n); };
-  for(int i = 0; i <= 2 * n; ++i)
-    for(int j = 0; j <= 2 * n; ++j)
-      if(kept(i, j))
+  std::vector<std::vector<long> > id(static_cast<std::size_t>(cells_x + 1),
+                                     std::vector<long>(static_cast<std::size_t>(cells_y + 1), -1));
+  auto vertex = [&](int i, int j) {
+    long& v = id[std::size_t(i)][std::size_t(j)];
+    if(v < 0)
+    {
+      v = static_cast<long>(s.points.size());
+      s.points.push_back({double(i) / n, double(j) / n, 0.});
+    }
+    return std::size_t(v);
+  };
+  for(int i = 0; i < cells_x; ++i)
+    for(int j = 0; j < cells_y; ++j)
+      if(!removed(i, j))
       {
-        id[std::size_t(i)][std::size_t(j)] = static_cast<long>(s.points.size());
-        s.points.push_back({double(i) / n, double(j) / n, 0.});
-      }
-  for(int i = 0; i < 2 * n; ++i)
-    for(int j = 0; j < 2 * n; ++j)
-      if(!(i >= n && j >= n))
-      {
-        const std::size_t a = std::size_t(id[std::size_t(i)][std::size_t(j)]);
-        const std::size_t b = std::size_t(id[std::size_t(i + 1)][std::size_t(j)]);
-        const std::size_t c = std::size_t(id[std::size_t(i + 1)][std::size_t(j + 1)]);
-        const std::size_t d = std::size_t(id[std::size_t(i)][std::size_t(j + 1)]);
+        const std::size_t a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
         s.faces.push_back({a, b, c});
         s.faces.push_back({a, c, d});
       }
   return s;
+}
+
+// A flat L-shaped domain, [0,2]^2 minus (1,2]^2, on a grid of step 1/n: star-shaped from the
+// points near its reentrant corner, not from the others.
+inline Soup l_shape(int n = 8)
+{
+  return notched_grid(n, 2 * n, 2 * n, [n](int i, int j) { return i >= n && j >= n; });
+}
+
+// A flat C-shaped domain, [0,3]^2 minus [1,3] x [1,2]: from any point of its left bar, the
+// tips of its arms are hidden.
+inline Soup c_shape(int n = 6)
+{
+  return notched_grid(n, 3 * n, 3 * n, [n](int i, int j) { return i >= n && j >= n && j < 2 * n; });
 }
 
 // A curved, asymmetric disk: the polar grid lifted onto a smooth bump.

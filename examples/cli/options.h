@@ -34,20 +34,37 @@ struct Options
   bool help = false;
   bool fixed_center = false;        // --center=vertex:N
   std::size_t center_vertex = 0;    // N
-  std::string distance = "poisson"; // the only border distance for now
+  std::string center = "poisson";   // poisson, or geodesic:METHOD (when not fixed_center)
+  std::string distance = "poisson"; // poisson, a geodesic METHOD, or straightest
   Solver solver = has_cholmod() ? Solver::cholmod : Solver::ldlt;
 
   std::string center_name() const
   {
-    return fixed_center ? "vertex:" + std::to_string(center_vertex) : std::string("poisson");
+    return fixed_center ? "vertex:" + std::to_string(center_vertex) : center;
   }
 };
+
+// The geodesic methods, by their command-line names.
+inline const std::vector<std::string>& geodesic_methods()
+{
+  static const std::vector<std::string> names = {"fast-marching", "dijkstra", "heat", "heat-idt", "exact"};
+  return names;
+}
+
+inline bool is_geodesic_method(const std::string& name)
+{
+  for(const std::string& m : geodesic_methods())
+    if(m == name)
+      return true;
+  return false;
+}
 
 inline std::string usage(const std::string& default_mesh)
 {
   std::string u =
-    "usage: measured_parameterization [INPUT] [OUTPUT.obj] [--center=poisson|vertex:N]\n"
-    "                                 [--distance=poisson] [--solver=cholmod|ldlt]\n"
+    "usage: measured_parameterization [INPUT] [OUTPUT.obj]\n"
+    "                                 [--center=poisson|geodesic[:METHOD]|vertex:N]\n"
+    "                                 [--distance=poisson|METHOD|straightest] [--solver=cholmod|ldlt]\n"
     "                                 [--output=FILE] [--svg=FILE] [--json] [--help]\n"
     "\n"
     "Flattens a disk-like triangle mesh with the measured boundary parameterization of\n"
@@ -68,11 +85,21 @@ inline std::string usage(const std::string& default_mesh)
     "                     directory (curved_disk_uv.obj for the generated mesh).\n"
     "\n"
     "options:\n"
-    "  --center=poisson   center at the maximum of the boundary Poisson distance map (default)\n"
+    "  --center=poisson   center at the maximum of the boundary Poisson distance map (BPDM,\n"
+    "                     default)\n"
+    "  --center=geodesic[:METHOD]\n"
+    "                     center at the maximum of the geodesic distance from the border (BGDM),\n"
+    "                     computed with METHOD (default fast-marching)\n"
     "  --center=vertex:N  center at vertex N: 0-based, in file order (for STL, in order of first\n"
     "                     appearance); it must be in a face and not on the longest border\n"
     "  --distance=poisson distances from the center to the border by the Poisson distance map\n"
-    "                     (default, and the only choice for now)\n"
+    "                     (default)\n"
+    "  --distance=METHOD  geodesic distances from the center, computed with METHOD\n"
+    "  --distance=straightest\n"
+    "                     straightest geodesics (cutting planes through the center's normal);\n"
+    "                     fails, naming the border vertex, when a plane curve misses its vertex\n"
+    "                     METHOD: fast-marching, dijkstra (along edges), heat (heat method),\n"
+    "                     heat-idt (heat method on the intrinsic Delaunay triangulation), exact\n"
     "  --solver=NAME      sparse Cholesky factorization: cholmod (CHOLMOD supernodal) or ldlt\n"
     "                     (Eigen's SimplicialLDLT). Default: ";
   u += has_cholmod() ? "cholmod" : "ldlt (this build has no CHOLMOD)";
@@ -159,6 +186,15 @@ inline std::string parse_options(int argc, char** argv, Options& o)
         return error;
       if(value == "poisson")
         o.fixed_center = false;
+      else if(value == "geodesic" || starts_with(value, "geodesic:"))
+      {
+        const std::string method = (value == "geodesic") ? std::string("fast-marching") : value.substr(9);
+        if(!is_geodesic_method(method))
+          return "unknown geodesic method '" + method + "' in --center=" + value +
+                 " (expected fast-marching, dijkstra, heat, heat-idt or exact)";
+        o.fixed_center = false;
+        o.center = "geodesic:" + method;
+      }
       else if(starts_with(value, "vertex:"))
       {
         const std::string n = value.substr(7);
@@ -172,14 +208,15 @@ inline std::string parse_options(int argc, char** argv, Options& o)
         o.center_vertex = static_cast<std::size_t>(index);
       }
       else
-        return "unknown value '" + value + "' of --center (expected poisson or vertex:N)";
+        return "unknown value '" + value + "' of --center (expected poisson, geodesic[:METHOD] or vertex:N)";
     }
     else if(arg == "--distance" || starts_with(arg, "--distance="))
     {
       if(!(error = value_of(arg, "--distance", seen_distance, value)).empty())
         return error;
-      if(value != "poisson")
-        return "unknown value '" + value + "' of --distance (expected poisson)";
+      if(value != "poisson" && value != "straightest" && !is_geodesic_method(value))
+        return "unknown value '" + value + "' of --distance (expected poisson, fast-marching, dijkstra, "
+               "heat, heat-idt, exact or straightest)";
       o.distance = value;
     }
     else if(arg == "--solver" || starts_with(arg, "--solver="))

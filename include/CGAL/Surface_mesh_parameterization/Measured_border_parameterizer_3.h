@@ -131,9 +131,11 @@ public:
   {
     /// status of the last call
     Error_code status = ERROR_WRONG_PARAMETER;
-    /// the center vertex
+    /// the center vertex (also after a failure of a later step; `null_vertex()` when the
+    /// call failed before the center was located)
     vertex_descriptor center = boost::graph_traits<Triangle_mesh>::null_vertex();
-    /// the border loop, from `source(bhd)`
+    /// the border loop, from `source(bhd)` (also after a failure of a later step; empty
+    /// when the input was rejected)
     std::vector<vertex_descriptor> border_vertices;
     /// distance from the center to each border vertex (same order)
     std::vector<double> border_distances;
@@ -225,6 +227,7 @@ public:
 
     Error_code prepared = OK;
     Error_code status = OK;
+    bool located = false;
     {
       std::unique_ptr<typename internal::Concurrent_section<typename AnyPatch::Solver_traits>::type> section;
       std::future<Error_code> preparing;
@@ -242,6 +245,7 @@ public:
         status = patch.factorize_interior_laplacian();
       if(status == OK)
         status = m_center_locator.locate_center(patch, center);
+      located = (status == OK);
       if(preparing.valid())
         prepared = preparing.get();
     }
@@ -263,12 +267,13 @@ public:
 
     record.status = status;
     record.statistics = patch.statistics();
+    record.border_vertices.reserve(patch.border().size());
+    for(int b : patch.border())
+      record.border_vertices.push_back(patch.vertex(static_cast<std::size_t>(b)));
+    if(located)
+      record.center = patch.vertex(center);
     if(status == OK)
     {
-      record.center = patch.vertex(center);
-      record.border_vertices.reserve(patch.border().size());
-      for(int b : patch.border())
-        record.border_vertices.push_back(patch.vertex(static_cast<std::size_t>(b)));
       record.border_distances = distances;
       record.border_angles = polar.angles;
       record.polar_origin = polar.origin;
@@ -286,7 +291,7 @@ public:
 
   /// the record of the last call.
   const Record& last_record() const { return *m_record; }
-  /// the center vertex of the last call (`null_vertex()` after a failure).
+  /// the center vertex of the last call (`null_vertex()` when it failed before locating it).
   vertex_descriptor center() const { return m_record->center; }
   /// the border vertices of the last call, from `source(bhd)` along the loop.
   const std::vector<vertex_descriptor>& border_vertices() const { return m_record->border_vertices; }
