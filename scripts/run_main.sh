@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j"$(nproc)"
+cmake --build build -j"$(nproc)" --target measured_parameterization_cli
 build/examples/measured_parameterization \
   --output=build/measured_parameterization.obj \
   --svg=build/measured_parameterization.svg
