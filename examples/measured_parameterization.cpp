@@ -162,18 +162,24 @@ struct Parameterization_result
   double factorization_seconds = 0., back_substitution_seconds = 0.;
   double degenerate_face_threshold = 0.;
   SMP::Straightest_geodesic_border_distance<Mesh>::Failure straightest_failure;
+  std::size_t flipped_before_repair = 0;
+  bool repaired = false, mean_value_interior = false;
+  double blend = 0., repair_seconds = 0.;
+  int repair_candidates = 0;
 };
 
 template <class SolverTraits>
 Parameterization_result run_parameterization(const Mesh& mesh, halfedge_descriptor bhd,
                                              const Command_line_center_locator& locator,
-                                             const Command_line_border_distance& distance,
+                                             const Command_line_border_distance& distance, bool repair,
                                              UV_map uvmap, Vertex_flag_map parameterized)
 {
   typedef SMP::Measured_conformal_parameterizer_3<Mesh, Command_line_center_locator,
                                                   Command_line_border_distance,
                                                   SolverTraits>                   Parameterizer;
   Parameterizer parameterizer(locator, distance);
+  if(!repair)
+    parameterizer.set_repair(Parameterizer::NO_REPAIR);
   Parameterization_result r;
   r.status = parameterizer.parameterize(mesh, bhd, uvmap, get(boost::vertex_index, mesh), parameterized);
   r.straightest_failure = distance.straightest_failure();
@@ -194,6 +200,12 @@ Parameterization_result run_parameterization(const Mesh& mesh, halfedge_descript
   r.factorization_seconds = report.statistics.factorization_seconds;
   r.back_substitution_seconds = report.statistics.back_substitution_seconds;
   r.degenerate_face_threshold = Parameterizer::Patch::degenerate_face_threshold();
+  r.flipped_before_repair = report.flipped_faces_before_repair;
+  r.repaired = report.repaired;
+  r.mean_value_interior = report.mean_value_interior;
+  r.blend = report.blend;
+  r.repair_seconds = report.repair_seconds;
+  r.repair_candidates = report.repair_candidates;
   return r;
 }
 
@@ -319,11 +331,12 @@ int main(int argc, char** argv)
   Parameterization_result result;
 #ifdef MBP_WITH_CHOLMOD
   if(options.solver == mbp_cli::Solver::cholmod)
-    result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(mesh, bhd, locator, distance, uvmap,
-                                                                           parameterized);
+    result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(mesh, bhd, locator, distance,
+                                                                           options.repair, uvmap, parameterized);
   else
 #endif
-    result = run_parameterization<CGAL::Default>(mesh, bhd, locator, distance, uvmap, parameterized);
+    result = run_parameterization<CGAL::Default>(mesh, bhd, locator, distance, options.repair, uvmap,
+                                                 parameterized);
 
   if(result.status != SMP::OK)
   {
@@ -335,6 +348,11 @@ int main(int argc, char** argv)
       f.detail = mbp_cli::find_non_finite_vertex(mesh);
     else if(result.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)
       f.detail = "the longest border touches itself, a vertex is non-manifold, or the surface has handles";
+    else if(result.status == SMP::ERROR_NO_1_TO_1_MAPPING)
+      f.detail = std::to_string(result.flipped_before_repair) +
+                 " faces are flipped by the measured border" +
+                 (options.repair ? std::string(" and no blend toward a circle repairs them")
+                                 : std::string(" (repair is off: --no-repair)"));
     else if(result.status == SMP::ERROR_DISTANCE_COMPUTATION_FAILED && options.distance == "straightest" &&
             result.straightest_failure.unreachable > 0)
       f.detail = "the straightest geodesic from the center (vertex " + std::to_string(std::size_t(result.center)) +
@@ -504,6 +522,15 @@ int main(int argc, char** argv)
        .member("quality", quality_seconds)
        .member("write", write_seconds)
        .end_object();
+    j.begin_object("repair")
+       .member("enabled", options.repair)
+       .member("flipped_faces_before", result.flipped_before_repair)
+       .member("repaired", result.repaired)
+       .member("blend", result.blend)
+       .member("interior", result.mean_value_interior ? "mean value coordinates" : "discrete conformal")
+       .member("candidates", result.repair_candidates)
+       .member("seconds", result.repair_seconds)
+       .end_object();
     j.begin_object("statistics")
        .member("factorizations", result.factorizations)
        .member("back_substitutions", result.back_substitutions)
@@ -540,6 +567,10 @@ int main(int argc, char** argv)
               << " | angle distortion " << rounded(quality.angle_distortion) << ", L2 stretch "
               << rounded(quality.l2_stretch) << ", quasi-conformal mean " << rounded(quality.quasi_conformal_mean)
               << ", flipped faces " << quality.flipped_faces
+              << (result.repaired ? " | repaired " + std::to_string(result.flipped_before_repair) +
+                                        " flipped faces: blend " + rounded(result.blend, 3) +
+                                        (result.mean_value_interior ? ", mean value interior" : "")
+                                  : std::string())
               << " | wrote " << options.output << (options.svg.empty() ? std::string() : ", " + options.svg)
               << "\n";
   }

@@ -215,6 +215,46 @@ inline Soup punctured_torus(int n = 12, int m = 8)
   return s;
 }
 
+// The soup without the faces incident to the given vertices, and without those vertices
+// (indices are compacted).
+inline Soup remove_vertices(const Soup& soup, const std::vector<std::size_t>& removed)
+{
+  std::vector<bool> gone(soup.points.size(), false);
+  for(std::size_t v : removed)
+    gone[v] = true;
+  std::vector<std::size_t> new_index(soup.points.size(), 0);
+  Soup out;
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    if(!gone[i])
+    {
+      new_index[i] = out.points.size();
+      out.points.push_back(soup.points[i]);
+    }
+  for(const auto& f : soup.faces)
+  {
+    bool keep = true;
+    for(std::size_t v : f)
+      keep = keep && !gone[v];
+    if(!keep)
+      continue;
+    std::vector<std::size_t> g;
+    for(std::size_t v : f)
+      g.push_back(new_index[v]);
+    out.faces.push_back(g);
+  }
+  return out;
+}
+
+// The polar grid (curved) with two square holes: the four faces around the middle vertex of
+// two quads are removed.
+inline Soup disk_with_two_holes()
+{
+  const int rings = 12, spokes = 32;
+  const Soup s = polar_disk(rings, spokes, 1.2, 1., [](double x, double y) { return 0.2 * x * y; });
+  auto mid = [&](int k, int j) { return std::size_t(1 + rings * spokes + j * (rings - 1) + (k - 1)); };
+  return remove_vertices(s, {mid(4, 3), mid(8, 20)});
+}
+
 template <class Mesh>
 void soup_to_mesh(const Soup& soup, Mesh& mesh)
 {

@@ -32,6 +32,7 @@ struct Options
   std::string svg;          // empty: no picture
   bool json = false;
   bool help = false;
+  bool repair = true;       // --no-repair turns it off
   bool fixed_center = false;        // --center=vertex:N
   std::size_t center_vertex = 0;    // N
   std::string center = "poisson";   // poisson, or geodesic:METHOD (when not fixed_center)
@@ -65,7 +66,7 @@ inline std::string usage(const std::string& default_mesh)
     "usage: measured_parameterization [INPUT] [OUTPUT.obj]\n"
     "                                 [--center=poisson|geodesic[:METHOD]|vertex:N]\n"
     "                                 [--distance=poisson|METHOD|straightest] [--solver=cholmod|ldlt]\n"
-    "                                 [--output=FILE] [--svg=FILE] [--json] [--help]\n"
+    "                                 [--output=FILE] [--svg=FILE] [--json] [--no-repair] [--help]\n"
     "\n"
     "Flattens a disk-like triangle mesh with the measured boundary parameterization of\n"
     "\"Measured boundary parameterization based on Poisson's equation\": the longest border is\n"
@@ -109,6 +110,8 @@ inline std::string usage(const std::string& default_mesh)
     "  --svg=FILE         also write an SVG picture of the UV layout, faces colored by their\n"
     "                     angle distortion, flipped faces in red\n"
     "  --json             print a JSON object on stdout instead of the one-line summary\n"
+    "  --no-repair        fail when the layout has flipped faces (by default the border is\n"
+    "                     blended toward a circle, as little as needed, until none is left)\n"
     "  -h, --help         print this help and exit\n"
     "\n"
     "The summary gives the number of vertices (V) and faces (F), the border (vertices, 3D\n"
@@ -118,8 +121,9 @@ inline std::string usage(const std::string& default_mesh)
     "(1 is optimal), the area-weighted mean quasi-conformal distortion s1/s2 (1 is\n"
     "conformal) and the number of flipped faces.\n"
     "\n"
-    "A layout with flipped faces (possible, since the measured border need not be convex) is\n"
-    "still written, with a warning on stderr.\n"
+    "The measured border need not be convex, so the layout can fold: flipped faces are then\n"
+    "repaired by blending the border toward a circle (reported in the summary), or, with\n"
+    "--no-repair, the program fails.\n"
     "\n"
     "Exit status: 0 on success; 1 when the input cannot be parameterized or an output file\n"
     "cannot be written (no output file is then left behind); 2 on a command-line error.\n";
@@ -180,6 +184,12 @@ inline std::string parse_options(int argc, char** argv, Options& o)
     }
     else if(starts_with(arg, "--json="))
       return "option --json takes no value";
+    else if(arg == "--no-repair")
+    {
+      if(!o.repair)
+        return "option --no-repair is given twice";
+      o.repair = false;
+    }
     else if(arg == "--center" || starts_with(arg, "--center="))
     {
       if(!(error = value_of(arg, "--center", seen_center, value)).empty())

@@ -58,7 +58,7 @@ public:
       return status;
     const int c = internal::argmax_with_tie_break(patch, values);
     if(c < 0)
-      return ERROR_DISTANCE_COMPUTATION_FAILED;
+      return ERROR_NO_INTERIOR_VERTEX;  // the distances are finite: the solver checked them
     center = static_cast<std::size_t>(c);
     return OK;
   }

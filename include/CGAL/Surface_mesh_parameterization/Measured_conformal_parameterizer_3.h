@@ -13,6 +13,8 @@
 #include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
+#include <CGAL/Surface_mesh_parameterization/internal/polar_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/repair.h>
 
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Default.h>
@@ -56,8 +58,13 @@ namespace Surface_mesh_parameterization {
 /// so it is visible after `CGAL::Surface_mesh_parameterization::parameterize()`, which takes
 /// the parameterizer by value. Do not use copies of one object concurrently.
 ///
-/// Validity: a measured border is star-shaped but in general not convex, so the result can
-/// contain flipped faces; check it, for example with `measure_quality()`.
+/// Validity: a measured border is star-shaped but in general not convex, and cotangent
+/// weights can be negative, so the discrete conformal interior can fold. Every result is
+/// checked (no flipped face over the patch, hole fillings included; with the star-shaped
+/// border this makes the map one-to-one and every hole a simple polygon) and, by default,
+/// repaired by blending the border toward a circle (see `Repair`); `last_report()` says
+/// whether and how. With `set_repair(NO_REPAIR)` an invalid result is an
+/// `ERROR_NO_1_TO_1_MAPPING`.
 ///
 /// \cgalModels `Parameterizer_3`
 ///
@@ -87,6 +94,23 @@ public:
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor        vertex_descriptor;
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor      halfedge_descriptor;
 
+  /// What to do when the measured parameterization is not one-to-one.
+  enum Repair
+  {
+    /// fail with `ERROR_NO_1_TO_1_MAPPING` (nothing is written)
+    NO_REPAIR,
+    /// blend the border radii toward a circle, \f$ r_k(t) = (1-t) r_k + t \bar r \f$ (polar
+    /// angles kept), as little as needed. Two interiors are tried: the discrete conformal
+    /// map (each blend costs two back-substitutions with the same factorization) and the
+    /// mean value coordinates map (positive weights; one sparse LU factorization, then two
+    /// back-substitutions per blend). For each, the smallest valid \f$ t \f$ is searched
+    /// among 0 (mean value only), 1/4, 1/2, 3/4, 1 and refined by three bisection steps;
+    /// the valid candidate of lower angle distortion is kept. At \f$ t = 1 \f$ the border is
+    /// convex, so the mean value map is valid (Floater's theorem): the repair always
+    /// succeeds, up to rounding. The default.
+    BLEND_TOWARD_CIRCLE
+  };
+
   /// What the last call did and how long each stage took (wall-clock seconds).
   struct Report
   {
@@ -111,6 +135,21 @@ public:
     double total_seconds = 0.;
     /// factorizations and back-substitutions of the call, with their times
     typename Patch::Statistics statistics;
+    /// whether the measured parameterization was one-to-one before any repair
+    bool valid_before_repair = true;
+    /// faces flipped by the measured border, before repair
+    std::size_t flipped_faces_before_repair = 0;
+    /// whether the result was repaired
+    bool repaired = false;
+    /// the blend toward the circle of the result (0: the measured border)
+    double blend = 0.;
+    /// whether the interior of the result is the mean value coordinates map (rather than
+    /// the discrete conformal map)
+    bool mean_value_interior = false;
+    /// borders tried by the repair
+    int repair_candidates = 0;
+    /// time of the repair (validity check included)
+    double repair_seconds = 0.;
   };
 
   /// creates a parameterizer with the given policies.
@@ -154,8 +193,8 @@ public:
     std::vector<Eigen::Vector2d> border_uv;
     if(status == OK)
     {
-      report.vertices = patch.number_of_vertices();
-      report.faces = patch.number_of_faces();
+      report.vertices = patch.number_of_real_vertices();
+      report.faces = patch.number_of_real_faces();
       status = m_border.parameterize_border(patch, border_uv, true);
       const typename Border_parameterizer::Record& r = m_border.last_record();
       report.center_seconds = r.center_seconds;
@@ -175,6 +214,21 @@ public:
 
     if(status == OK)
     {
+      std::vector<Eigen::Vector2d> uv;
+      internal::assemble_uv(patch, border_uv, u, v, uv);
+      report.flipped_faces_before_repair = internal::count_flips(patch, uv);
+      report.valid_before_repair = report.flipped_faces_before_repair == 0 &&
+                                   internal::border_curves_are_valid(patch, uv);
+      if(!report.valid_before_repair)
+        status = (m_repair == NO_REPAIR) ? ERROR_NO_1_TO_1_MAPPING
+                                         : blend_toward_circle(patch, border_uv, u, v, report);
+      const Clock::time_point t2 = Clock::now();
+      report.repair_seconds = seconds(t, t2);
+      t = t2;
+    }
+
+    if(status == OK)
+    {
       typedef typename boost::property_traits<VertexUVmap>::value_type Point_2;
       const std::vector<int>& border = patch.border();
       for(std::size_t k = 0; k < border.size(); ++k)
@@ -186,6 +240,8 @@ public:
       const std::vector<int>& interior = patch.interior_vertices();
       for(std::size_t r = 0; r < interior.size(); ++r)
       {
+        if(patch.is_virtual(static_cast<std::size_t>(interior[r])))
+          continue;  // the filling of a hole
         const vertex_descriptor vd = patch.vertex(static_cast<std::size_t>(interior[r]));
         put(uvmap, vd, Point_2(u[r], v[r]));
         put(vpmap, vd, true);
@@ -199,6 +255,11 @@ public:
     *m_report = report;
     return status;
   }
+
+  /// chooses what to do when the result is not one-to-one (default: `BLEND_TOWARD_CIRCLE`).
+  void set_repair(Repair repair) { m_repair = repair; }
+  /// see `set_repair()`.
+  Repair repair() const { return m_repair; }
 
   /// whether center-independent work runs in a second thread while the center is located
   /// (default: `true`; see `Measured_border_parameterizer_3::use_concurrency()`). Results do
@@ -231,8 +292,92 @@ private:
     return patch.solve_interior(rhs, v);
   }
 
+  // The repair of BLEND_TOWARD_CIRCLE: replaces border_uv, u, v by the kept candidate, or
+  // returns ERROR_NO_1_TO_1_MAPPING.
+  Error_code blend_toward_circle(Patch& patch, std::vector<Eigen::Vector2d>& border_uv,
+                                 std::vector<double>& u, std::vector<double>& v, Report& report) const
+  {
+    const typename Border_parameterizer::Record& record = m_border.last_record();
+    const int center = patch.index(record.center);
+    if(center < 0)
+      return ERROR_NO_1_TO_1_MAPPING;
+    internal::Mean_value_interior mvc;
+
+    struct Candidate
+    {
+      std::vector<Eigen::Vector2d> border_uv, uv;
+      std::vector<double> u, v;
+      double blend = -1.;
+    };
+    // the map for blend t; true when it is one-to-one
+    auto evaluate = [&](double t, bool mean_value, Candidate& c) -> bool {
+      ++report.repair_candidates;
+      internal::Polar_border polar;
+      if(internal::polar_border_map(patch, static_cast<std::size_t>(center),
+                                    internal::blend_radii(record.border_distances, t), polar) != OK)
+        return false;
+      c.border_uv = polar.uv;
+      const Error_code status = mean_value ? mvc.solve(patch, c.border_uv, c.u, c.v)
+                                           : solve_interior(patch, c.border_uv, c.u, c.v);
+      if(status != OK)
+        return false;
+      internal::assemble_uv(patch, c.border_uv, c.u, c.v, c.uv);
+      c.blend = t;
+      return internal::is_one_to_one(patch, c.uv);
+    };
+    // the valid candidate of smallest blend, if any
+    auto search = [&](bool mean_value, Candidate& best) -> bool {
+      double invalid = mean_value ? -1. : 0., valid = -1.;  // DCP at t = 0: the measured result
+      Candidate c;
+      for(double t : {0., 0.25, 0.5, 0.75, 1.})
+      {
+        if(t <= invalid)
+          continue;
+        if(evaluate(t, mean_value, c))
+        {
+          valid = t;
+          best = c;
+          break;
+        }
+        invalid = t;
+      }
+      if(valid < 0.)
+        return false;
+      for(int step = 0; step < 3 && invalid >= 0.; ++step)
+      {
+        const double mid = 0.5 * (invalid + valid);
+        if(evaluate(mid, mean_value, c))
+        {
+          valid = mid;
+          best = c;
+        }
+        else
+          invalid = mid;
+      }
+      return true;
+    };
+
+    Candidate conformal, mean_value;
+    const bool conformal_ok = search(false, conformal);
+    const bool mean_value_ok = (mvc.factor(patch) == OK) && search(true, mean_value);
+    if(!conformal_ok && !mean_value_ok)
+      return ERROR_NO_1_TO_1_MAPPING;
+    const bool use_mean_value =
+      mean_value_ok && (!conformal_ok || internal::angle_distortion(patch, mean_value.uv) <
+                                         internal::angle_distortion(patch, conformal.uv));
+    const Candidate& kept = use_mean_value ? mean_value : conformal;
+    border_uv = kept.border_uv;
+    u = kept.u;
+    v = kept.v;
+    report.repaired = true;
+    report.blend = kept.blend;
+    report.mean_value_interior = use_mean_value;
+    return OK;
+  }
+
   Border_parameterizer m_border;
   std::shared_ptr<Report> m_report;
+  Repair m_repair = BLEND_TOWARD_CIRCLE;
 };
 
 } // namespace Surface_mesh_parameterization

@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/internal/laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/internal/sparse_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/triangle_adjacency.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -111,6 +112,15 @@ public:
   /// `face(opposite(bhd))`. The border loop is the *main border*; every other vertex of the
   /// component (including the vertices of other border loops, i.e. holes) is *interior*.
   ///
+  /// Holes (border loops other than the main one) are filled *virtually*: each gets one
+  /// virtual vertex, placed at the centroid of its loop lifted by a fifth of the loop's mean
+  /// radius along the loop's normal, joined to every loop edge by a virtual face. Every solve
+  /// of the method then works on a topological disk, and a parameterization without flipped
+  /// faces maps each hole to a simple polygon (star-shaped around its virtual vertex).
+  /// Virtual vertices are interior, have no mesh vertex (`vertex(i)` is `null_vertex()`,
+  /// `is_virtual(i)` is `true`) and come after the real ones; virtual faces come after the
+  /// real faces. `fill_holes = false` keeps holes as free (natural) boundaries instead.
+  ///
   /// Checks, in this order, and returns the first failure:
   /// `ERROR_EMPTY_MESH` (no face), `ERROR_INVALID_BORDER_HALFEDGE` (null or not a border
   /// halfedge), `ERROR_NON_TRIANGULAR_MESH`, `ERROR_BORDER_TOO_SHORT` (fewer than 3 border
@@ -121,7 +131,8 @@ public:
   /// \tparam VertexPointMap a model of `ReadablePropertyMap` from `vertex_descriptor` to a
   ///         CGAL 3D point type.
   template <class VertexPointMap>
-  Error_code build_disk(const TriangleMesh& tm, halfedge_descriptor bhd, VertexPointMap vpm)
+  Error_code build_disk(const TriangleMesh& tm, halfedge_descriptor bhd, VertexPointMap vpm,
+                        bool fill_holes = true)
   {
     clear();
     if(faces(tm).empty())
@@ -132,6 +143,10 @@ public:
     Error_code status = collect_component(tm, face(opposite(bhd, tm), tm), vpm);
     if(status == OK) status = collect_border_loop(bhd);
     if(status == OK) status = check_disk_topology();
+    if(status == OK) status = check_finite();
+    if(status == OK) collect_hole_loops();
+    if(status == OK && fill_holes) fill_holes_virtually();
+    m_loops.clear();
     if(status == OK) status = check_geometry();
     if(status == OK && m_interior.empty()) status = ERROR_NO_INTERIOR_VERTEX;
     if(status != OK)
@@ -150,6 +165,8 @@ public:
     if(faces(tm).empty() || seed == boost::graph_traits<TriangleMesh>::null_face())
       return ERROR_EMPTY_MESH;
     Error_code status = collect_component(tm, seed, vpm);
+    m_loops.clear();
+    if(status == OK) status = check_finite();
     if(status == OK) status = check_geometry();
     if(status == OK)
     {
@@ -173,11 +190,17 @@ public:
 
   /// the mesh the patch was built from (`nullptr` for an empty patch).
   const TriangleMesh* mesh() const { return m_mesh; }
-  /// number of vertices of the patch.
+  /// number of vertices of the patch (virtual ones included).
   std::size_t number_of_vertices() const { return m_vertices.size(); }
+  /// number of real vertices: the mesh's vertices, local indices `0..n-1`.
+  std::size_t number_of_real_vertices() const { return m_real_vertices; }
+  /// whether local vertex `i` is a virtual vertex (the filling of a hole).
+  bool is_virtual(std::size_t i) const { return i >= m_real_vertices; }
+  /// number of real faces (the mesh's faces, which come first in `faces_indices()`).
+  std::size_t number_of_real_faces() const { return m_real_faces; }
   /// number of faces of the patch.
   std::size_t number_of_faces() const { return m_faces.size(); }
-  /// the mesh vertex of local index `i`.
+  /// the mesh vertex of local index `i` (`null_vertex()` for a virtual vertex).
   vertex_descriptor vertex(std::size_t i) const { return m_vertices[i]; }
   /// all mesh vertices, by local index.
   const std::vector<vertex_descriptor>& vertices() const { return m_vertices; }
@@ -211,8 +234,13 @@ public:
   const std::vector<int>& interior_vertices() const { return m_interior; }
   /// the row of local vertex `i` in the interior system, or -1 for a border vertex.
   int interior_index(std::size_t i) const { return m_interior_index[i]; }
-  /// number of border loops of the component (the main border included).
+  /// number of border loops of the component in the mesh (the main border included; holes
+  /// count even when they are filled virtually).
   int number_of_border_loops() const { return m_border_loops; }
+  /// the border loops other than the main one (holes), each as local indices in the order of
+  /// its border halfedges (`source()` of each), i.e. counterclockwise around the hole as
+  /// seen with the faces' orientation. Empty for a patch built by `build_component()`.
+  const std::vector<std::vector<int> >& hole_loops() const { return m_hole_loops; }
 
   /// @}
 
@@ -399,6 +427,10 @@ private:
     m_mean_spoke.clear();
     m_spring_row_sums.clear();
     m_border_loops = 0;
+    m_loops.clear();
+    m_hole_loops.clear();
+    m_real_vertices = 0;
+    m_real_faces = 0;
     m_interior_system.reset();
     m_spring_system.reset();
     m_spring_exponent = 0.;
@@ -452,8 +484,12 @@ private:
           if(!get(loop_seen, o))  // a border loop not walked yet
           {
             ++m_border_loops;
+            m_loops.emplace_back();
             for(halfedge_descriptor b : halfedges_around_face(o, tm))
+            {
               put(loop_seen, b, true);
+              m_loops.back().push_back(b);
+            }
           }
         }
         else if(!get(visited, g))
@@ -468,7 +504,76 @@ private:
       m_faces.push_back(t);
       m_single_edges.push_back(single);
     }
+    m_real_vertices = m_vertices.size();
+    m_real_faces = m_faces.size();
     return OK;
+  }
+
+  // The holes: every border loop but the main one, as local indices.
+  void collect_hole_loops()
+  {
+    const TriangleMesh& tm = *m_mesh;
+    for(const std::vector<halfedge_descriptor>& loop : m_loops)
+    {
+      bool main = false;
+      for(halfedge_descriptor b : loop)
+        main = main || (b == m_bhd);
+      if(main)
+        continue;
+      m_hole_loops.emplace_back();
+      for(halfedge_descriptor b : loop)
+        m_hole_loops.back().push_back(index(source(b, tm)));
+    }
+  }
+
+  // Adds one virtual vertex and a fan of virtual faces in every hole.
+  void fill_holes_virtually()
+  {
+    for(const std::vector<int>& loop : m_hole_loops)
+    {
+      const std::size_t m = loop.size();
+      Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+      for(int i : loop)
+        centroid += point(static_cast<std::size_t>(i));
+      centroid /= double(m);
+      Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+      double radius = 0.;
+      for(std::size_t k = 0; k < m; ++k)
+      {
+        const Eigen::Vector3d a = point(static_cast<std::size_t>(loop[k])) - centroid;
+        const Eigen::Vector3d c = point(static_cast<std::size_t>(loop[(k + 1) % m])) - centroid;
+        normal += a.cross(c);
+        radius += a.norm();
+      }
+      radius /= double(m);
+      const double length = normal.norm();
+      const Eigen::Vector3d lift = (length > 0.) ? Eigen::Vector3d(0.2 * radius * normal / length)
+                                                 : Eigen::Vector3d::Zero();
+      const int c = static_cast<int>(m_vertices.size());
+      m_vertices.push_back(boost::graph_traits<TriangleMesh>::null_vertex());
+      m_points.push_back(centroid + lift);
+      m_interior_index.push_back(static_cast<int>(m_interior.size()));
+      m_interior.push_back(c);
+      // the border halfedge runs s -> t on the hole's side: the face (s, t, c) is oriented
+      // as the mesh face across the edge, which holds t -> s
+      for(std::size_t k = 0; k < m; ++k)
+      {
+        m_faces.push_back({{loop[k], loop[(k + 1) % m], c}});
+        m_single_edges.push_back(0);
+      }
+    }
+    if(m_hole_loops.empty())
+      return;
+    // the hole edges now have two faces
+    const internal::Triangle_adjacency adjacency(m_vertices.size(), m_faces);
+    for(std::size_t f = 0; f < m_faces.size(); ++f)
+    {
+      unsigned char single = 0;
+      for(int k = 0; k < 3; ++k)
+        if(adjacency.neighbor(f, k) < 0)
+          single |= static_cast<unsigned char>(1u << k);
+      m_single_edges[f] = single;
+    }
   }
 
   Error_code collect_border_loop(halfedge_descriptor bhd)
@@ -528,12 +633,17 @@ private:
     return OK;
   }
 
-  // Finite coordinates, then non-degenerate faces; computes the half cotangents.
-  Error_code check_geometry()
+  Error_code check_finite() const
   {
     for(const Eigen::Vector3d& p : m_points)
       if(!p.allFinite())
         return ERROR_NON_FINITE_COORDINATES;
+    return OK;
+  }
+
+  // Non-degenerate faces; computes the half cotangents and the row sums.
+  Error_code check_geometry()
+  {
 
     m_half_cot.resize(m_faces.size());
     for(std::size_t f = 0; f < m_faces.size(); ++f)
@@ -575,6 +685,10 @@ private:
   std::vector<int> m_interior;
   std::vector<int> m_interior_index;
   int m_border_loops = 0;
+  std::vector<std::vector<halfedge_descriptor> > m_loops;  // during construction only
+  std::vector<std::vector<int> > m_hole_loops;
+  std::size_t m_real_vertices = 0;
+  std::size_t m_real_faces = 0;
   std::vector<double> m_cot_row_sums;
   std::vector<double> m_mean_spoke;
   std::unique_ptr<System> m_interior_system;

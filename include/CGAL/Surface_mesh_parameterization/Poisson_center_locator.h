@@ -56,8 +56,7 @@ public:
       return status;
     const int c = internal::argmax_with_tie_break(patch, values);
     if(c < 0)
-      return patch.interior_vertices().empty() ? ERROR_NO_INTERIOR_VERTEX
-                                               : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      return ERROR_NO_INTERIOR_VERTEX;  // the values are finite: the solves checked them
     center = static_cast<std::size_t>(c);
     return OK;
   }

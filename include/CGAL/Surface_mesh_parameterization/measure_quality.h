@@ -9,6 +9,9 @@
 /// \file measure_quality.h
 /// Distortion figures of a parameterization, with the definitions of METHOD.md section 5.
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
+#include <CGAL/Surface_mesh_parameterization/internal/validity.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -28,6 +31,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
@@ -291,6 +295,54 @@ Parameterization_quality measure_quality_per_face(const TriangleMesh& tm,
                                    [&](face_descriptor f, const Face_quality& fq) { put(face_figures, f, fq); });
 }
 
+
+namespace internal {
+
+// Reads a UV map as the mesh kernel's Point_2 (what CGAL's validity test expects).
+template <class TriangleMesh, class VertexUVMap>
+struct Kernel_uv_map
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor key_type;
+  typedef typename Surface_mesh_parameterization::internal::Kernel_traits<TriangleMesh>::Kernel::Point_2 value_type;
+  typedef value_type reference;
+  typedef boost::readable_property_map_tag category;
+  VertexUVMap uvmap;
+
+  friend value_type get(const Kernel_uv_map& m, key_type v)
+  {
+    const auto& q = get(m.uvmap, v);
+    return value_type(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+  }
+};
+
+} // namespace internal
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// the global overlap test: whether the map given by `uvmap` on the faces of `face_range` is
+/// one-to-one, i.e. no UV triangle is flipped and no two UV triangles overlap (which a map
+/// without flipped triangles can still do when it winds over itself). Uses CGAL's test
+/// (bounding box intersections, then exact predicates), \f$ O(F \log F) \f$ typically.
+template <class TriangleMesh, class FaceRange, class VertexUVMap>
+bool is_one_to_one_uv_map(const TriangleMesh& tm, const FaceRange& face_range, VertexUVMap uvmap)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor     face_descriptor;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel              EK;
+  for(face_descriptor f : face_range)
+  {
+    std::vector<EK::Point_2> q;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
+    {
+      const auto& p = get(uvmap, target(h, tm));
+      q.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+    }
+    if(q.size() != 3 || CGAL::orientation(q[0], q[1], q[2]) != CGAL::LEFT_TURN)
+      return false;
+  }
+  const internal::Kernel_uv_map<TriangleMesh, VertexUVMap> converted{uvmap};
+  return Surface_mesh_parameterization::internal::is_one_to_one_mapping(tm, face_range, converted);
+}
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

@@ -51,8 +51,8 @@ struct Solver_from_np
 /// \f$ \Delta f = -g \f$ on the vertices off the loop, \f$ f = 0 \f$ on the loop, with the
 /// cotangent weights \f$ w_{ij} = (\cot\alpha_{ij} + \cot\beta_{ij})/2 \f$ normalised to sum 1
 /// (\f$ \Delta f(v_i) = \sum_j w_{ij} (f_j - f_i) / \sum_j w_{ij} \f$) and \f$ g(v_i) \f$ the
-/// mean length of the edges at \f$ v_i \f$. Vertices of other border loops (holes) are
-/// unknowns with the natural boundary condition. The system is solved as the symmetric
+/// mean length of the edges at \f$ v_i \f$. Other border loops (holes) are filled
+/// virtually (see `Parameterization_patch_3::build_disk()`), so their vertices are interior. The system is solved as the symmetric
 /// positive definite \f$ L_{II} f_I = (d g)_I \f$ with a sparse Cholesky factorization.
 ///
 /// The map is 0 on the border loop and positive inside; it scales like lengths and is
@@ -93,7 +93,7 @@ Error_code boundary_poisson_distance_map(
   status = internal::boundary_poisson_distance(patch, values);
   if(status != OK)
     return status;
-  for(std::size_t i = 0; i < values.size(); ++i)
+  for(std::size_t i = 0; i < patch.number_of_real_vertices(); ++i)
     put(distance_map, patch.vertex(i), FT(values[i]));
   return OK;
 }

@@ -25,8 +25,9 @@ namespace internal {
 // Relative tolerance under which two values of a distance map count as tied maxima.
 constexpr double center_tie_tolerance = 1e-9;
 
-// Returns the interior vertex (local index) that maximizes `values`, or -1 when there is no
-// interior vertex or a value is not finite.
+// Returns the real interior vertex (local index; virtual vertices, which fill holes, are
+// never centers) that maximizes `values`, or -1 when there is no real interior vertex or a
+// value is not finite.
 //
 // Ties: every interior vertex whose value is within `center_tie_tolerance * |max|` of the
 // maximum is a tied maximum. When there are several, the center is chosen by the distance
@@ -44,7 +45,11 @@ constexpr double center_tie_tolerance = 1e-9;
 template <class Patch>
 int argmax_with_tie_break(const Patch& patch, const std::vector<double>& values)
 {
-  const std::vector<int>& interior = patch.interior_vertices();
+  std::vector<int> interior;
+  interior.reserve(patch.interior_vertices().size());
+  for(int i : patch.interior_vertices())
+    if(!patch.is_virtual(static_cast<std::size_t>(i)))
+      interior.push_back(i);
   double best = -std::numeric_limits<double>::infinity();
   for(int i : interior)
   {

@@ -1,0 +1,283 @@
+// Copyright (c) 2026 The measured boundary parameterization authors.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_REPAIR_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_REPAIR_H
+
+// Validity of a parameterization of a patch, and what the repair needs (METHOD.md section 4):
+// the one-to-one test, the mean value coordinates interior solve (positive weights: with a
+// convex border the map is an embedding, by Floater's theorem), and the paper's angle
+// distortion, to choose between repairs.
+//
+// The one-to-one test. Orient every border curve of the patch so that the faces are on its
+// left: the outer border counterclockwise, each hole clockwise. If every real face is
+// positively oriented in UV, the number of faces covering a point q (away from the curves)
+// is the sum of the winding numbers of these curves around q. When the curves are simple,
+// pairwise disjoint, and each hole (traversed along its border halfedges) is counterclockwise
+// in UV, that sum is 1 inside the outer curve and outside the holes, and 0 elsewhere: the map
+// is one-to-one and every hole is a simple polygon. The test checks exactly these
+// conditions (exact predicates for the segment intersections), in O(F + m log m) time for m
+// border vertices. The outer border is star-shaped by construction, hence simple.
+
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/laplacian.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/number_type_config.h>
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// UV of every patch vertex from the border UVs (border() order) and the interior solution
+// (interior_vertices() order).
+template <class Patch>
+void assemble_uv(const Patch& patch, const std::vector<Eigen::Vector2d>& border_uv,
+                 const std::vector<double>& u, const std::vector<double>& v,
+                 std::vector<Eigen::Vector2d>& uv)
+{
+  uv.assign(patch.number_of_vertices(), Eigen::Vector2d::Zero());
+  for(std::size_t k = 0; k < border_uv.size(); ++k)
+    uv[static_cast<std::size_t>(patch.border()[k])] = border_uv[k];
+  const std::vector<int>& interior = patch.interior_vertices();
+  for(std::size_t r = 0; r < interior.size(); ++r)
+    uv[static_cast<std::size_t>(interior[r])] = Eigen::Vector2d(u[r], v[r]);
+}
+
+// Real faces (the mesh's, not the hole fillings) whose UV triangle is not positively oriented.
+template <class Patch>
+std::size_t count_flips(const Patch& patch, const std::vector<Eigen::Vector2d>& uv)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  std::size_t flips = 0;
+  const std::vector<std::array<int, 3> >& faces = patch.faces_indices();
+  for(std::size_t f = 0; f < patch.number_of_real_faces(); ++f)
+  {
+    const std::array<int, 3>& t = faces[f];
+    const Eigen::Vector2d &a = uv[static_cast<std::size_t>(t[0])], &b = uv[static_cast<std::size_t>(t[1])],
+                          &c = uv[static_cast<std::size_t>(t[2])];
+    if(CGAL::orientation(K::Point_2(a.x(), a.y()), K::Point_2(b.x(), b.y()), K::Point_2(c.x(), c.y())) !=
+       CGAL::LEFT_TURN)
+      ++flips;
+  }
+  return flips;
+}
+
+// Whether the border curves (outer border and holes) are simple, pairwise disjoint, and the
+// holes counterclockwise along their border halfedges (see the top of this file).
+template <class Patch>
+bool border_curves_are_valid(const Patch& patch, const std::vector<Eigen::Vector2d>& uv)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  std::vector<const std::vector<int>*> loops(1, &patch.border());
+  for(const std::vector<int>& hole : patch.hole_loops())
+  {
+    double area = 0.;
+    for(std::size_t k = 0; k < hole.size(); ++k)
+    {
+      const Eigen::Vector2d& p = uv[static_cast<std::size_t>(hole[k])];
+      const Eigen::Vector2d& q = uv[static_cast<std::size_t>(hole[(k + 1) % hole.size()])];
+      area += p.x() * q.y() - p.y() * q.x();
+    }
+    if(!(area > 0.))
+      return false;
+    loops.push_back(&hole);
+  }
+  if(loops.size() == 1)
+    return true;  // the outer border alone is star-shaped, hence simple
+
+  // all border segments, swept along x: a segment is tested against those whose x-range
+  // overlaps its own
+  struct Segment
+  {
+    int a, b;
+    double xmin, xmax;
+  };
+  std::vector<Segment> segments;
+  for(const std::vector<int>* loop : loops)
+    for(std::size_t k = 0; k < loop->size(); ++k)
+    {
+      const int a = (*loop)[k], b = (*loop)[(k + 1) % loop->size()];
+      const double xa = uv[static_cast<std::size_t>(a)].x(), xb = uv[static_cast<std::size_t>(b)].x();
+      segments.push_back({a, b, (std::min)(xa, xb), (std::max)(xa, xb)});
+    }
+  std::sort(segments.begin(), segments.end(),
+            [](const Segment& s, const Segment& t) { return s.xmin < t.xmin; });
+  auto point = [&uv](int i) {
+    return K::Point_2(uv[static_cast<std::size_t>(i)].x(), uv[static_cast<std::size_t>(i)].y());
+  };
+  for(std::size_t i = 0; i < segments.size(); ++i)
+    for(std::size_t j = i + 1; j < segments.size() && segments[j].xmin <= segments[i].xmax; ++j)
+    {
+      const Segment &s = segments[i], &t = segments[j];
+      if(s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b)
+        continue;  // consecutive segments of one curve (a fold-back there flips a face)
+      if(CGAL::do_intersect(K::Segment_2(point(s.a), point(s.b)), K::Segment_2(point(t.a), point(t.b))))
+        return false;
+    }
+  return true;
+}
+
+// The one-to-one test: no flipped real face, valid border curves.
+template <class Patch>
+bool is_one_to_one(const Patch& patch, const std::vector<Eigen::Vector2d>& uv)
+{
+  return count_flips(patch, uv) == 0 && border_curves_are_valid(patch, uv);
+}
+
+// The paper's angle distortion (measure_quality()'s `angle_distortion`) over the real faces.
+template <class Patch>
+double angle_distortion(const Patch& patch, const std::vector<Eigen::Vector2d>& uv)
+{
+  const std::size_t n = patch.number_of_real_vertices();
+  const std::vector<std::array<int, 3> >& faces = patch.faces_indices();
+  std::vector<bool> on_border(n, false);
+  for(int b : patch.border())
+    on_border[static_cast<std::size_t>(b)] = true;
+  for(const std::vector<int>& hole : patch.hole_loops())
+    for(int b : hole)
+      on_border[static_cast<std::size_t>(b)] = true;
+  auto angle3 = [&patch](int i, int j, int k) {
+    const Eigen::Vector3d a = patch.point(static_cast<std::size_t>(j)) - patch.point(static_cast<std::size_t>(i));
+    const Eigen::Vector3d b = patch.point(static_cast<std::size_t>(k)) - patch.point(static_cast<std::size_t>(i));
+    return std::atan2(a.cross(b).norm(), a.dot(b));
+  };
+  std::vector<double> sum(n, 0.);
+  for(std::size_t f = 0; f < patch.number_of_real_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+      sum[static_cast<std::size_t>(faces[f][static_cast<std::size_t>(k)])] +=
+        angle3(faces[f][static_cast<std::size_t>(k)], faces[f][static_cast<std::size_t>((k + 1) % 3)],
+               faces[f][static_cast<std::size_t>((k + 2) % 3)]);
+  double total = 0.;
+  for(std::size_t f = 0; f < patch.number_of_real_faces(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int i = faces[f][static_cast<std::size_t>(k)];
+      const int j = faces[f][static_cast<std::size_t>((k + 1) % 3)], l = faces[f][static_cast<std::size_t>((k + 2) % 3)];
+      double phi = angle3(i, j, l);
+      if(!on_border[static_cast<std::size_t>(i)] && sum[static_cast<std::size_t>(i)] > 0.)
+        phi *= 2. * CGAL_PI / sum[static_cast<std::size_t>(i)];
+      const Eigen::Vector2d a = uv[static_cast<std::size_t>(j)] - uv[static_cast<std::size_t>(i)];
+      const Eigen::Vector2d b = uv[static_cast<std::size_t>(l)] - uv[static_cast<std::size_t>(i)];
+      const double alpha = std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
+      if(phi > 0.)
+        total += ((alpha - phi) / phi) * ((alpha - phi) / phi);
+    }
+  return (n > 0) ? total / double(n) : 0.;
+}
+
+// r_k(t) = (1 - t) r_k + t * mean(r): t = 0 keeps the measured radii, t = 1 puts every border
+// vertex on one circle (at its measured polar angle), which makes the border convex.
+inline std::vector<double> blend_radii(const std::vector<double>& radii, double t)
+{
+  double mean = 0.;
+  for(double r : radii)
+    mean += r;
+  mean /= double(radii.size());
+  std::vector<double> blended(radii.size());
+  for(std::size_t k = 0; k < radii.size(); ++k)
+    blended[k] = (1. - t) * radii[k] + t * mean;
+  return blended;
+}
+
+// The interior of the mean value coordinates parameterization (Floater 2003) with a fixed
+// border: row i is sum_j w_ij (u_i - u_j) = 0, w_ij = (tan(a/2) + tan(b/2)) / |x_i - x_j|, a
+// and b the angles at i of the two faces of edge ij. The matrix is not symmetric: one sparse
+// LU factorization, then two back-substitutions per border.
+class Mean_value_interior
+{
+public:
+  template <class Patch>
+  Error_code factor(const Patch& patch)
+  {
+    const std::vector<std::array<int, 3> >& faces = patch.faces_indices();
+    const std::size_t n = patch.interior_vertices().size();
+    m_border_weights.clear();
+    std::vector<Triplet> triplets;
+    triplets.reserve(faces.size() * 9);
+    for(const std::array<int, 3>& t : faces)
+      for(int k = 0; k < 3; ++k)
+      {
+        const std::size_t i = static_cast<std::size_t>(t[static_cast<std::size_t>(k)]);
+        const int row = patch.interior_index(i);
+        if(row < 0)
+          continue;
+        const std::size_t j = static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)]);
+        const std::size_t l = static_cast<std::size_t>(t[static_cast<std::size_t>((k + 2) % 3)]);
+        const Eigen::Vector3d a = patch.point(j) - patch.point(i), b = patch.point(l) - patch.point(i);
+        const double la = a.norm(), lb = b.norm();
+        if(!(la > 0.) || !(lb > 0.))
+          return ERROR_DEGENERATE_FACE;
+        const double angle = std::atan2(a.cross(b).norm(), a.dot(b));
+        const double tan_half = std::tan(0.5 * angle);
+        for(const std::pair<std::size_t, double>& nb : {std::make_pair(j, tan_half / la), std::make_pair(l, tan_half / lb)})
+        {
+          triplets.emplace_back(row, row, nb.second);
+          const int col = patch.interior_index(nb.first);
+          if(col >= 0)
+            triplets.emplace_back(row, col, -nb.second);
+          else
+            m_border_weights.push_back({row, static_cast<int>(nb.first), nb.second});
+        }
+      }
+    Eigen::SparseMatrix<double> A(static_cast<int>(n), static_cast<int>(n));
+    A.setFromTriplets(triplets.begin(), triplets.end());
+    A.makeCompressed();
+    m_lu = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double> > >();
+    m_lu->compute(A);
+    return (m_lu->info() == Eigen::Success) ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  }
+
+  // interior u, v for the border UVs (one per patch.border() entry)
+  template <class Patch>
+  Error_code solve(const Patch& patch, const std::vector<Eigen::Vector2d>& border_uv,
+                   std::vector<double>& u, std::vector<double>& v) const
+  {
+    std::vector<Eigen::Vector2d> at(patch.number_of_vertices(), Eigen::Vector2d::Zero());
+    for(std::size_t k = 0; k < border_uv.size(); ++k)
+      at[static_cast<std::size_t>(patch.border()[k])] = border_uv[k];
+    const Eigen::Index n = static_cast<Eigen::Index>(patch.interior_vertices().size());
+    Eigen::VectorXd bu = Eigen::VectorXd::Zero(n), bv = Eigen::VectorXd::Zero(n);
+    for(const Border_weight& w : m_border_weights)
+    {
+      bu[w.row] += w.weight * at[static_cast<std::size_t>(w.vertex)].x();
+      bv[w.row] += w.weight * at[static_cast<std::size_t>(w.vertex)].y();
+    }
+    const Eigen::VectorXd xu = m_lu->solve(bu), xv = m_lu->solve(bv);
+    if(m_lu->info() != Eigen::Success || !xu.allFinite() || !xv.allFinite())
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    u.assign(xu.data(), xu.data() + n);
+    v.assign(xv.data(), xv.data() + n);
+    return OK;
+  }
+
+private:
+  struct Border_weight
+  {
+    int row;
+    int vertex;
+    double weight;
+  };
+  std::vector<Border_weight> m_border_weights;
+  std::unique_ptr<Eigen::SparseLU<Eigen::SparseMatrix<double> > > m_lu;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_REPAIR_H
