@@ -262,10 +262,10 @@ public:
     if(m_border.empty() || m_interior.empty())
       return ERROR_WRONG_PARAMETER;
     m_interior_system = std::make_unique<System>();
-    std::vector<internal::Triplet> triplets;
-    internal::laplacian_triplets(m_faces, m_interior_index,
-                                 internal::Cotangent_weight{&m_half_cot}, triplets);
-    return m_interior_system->factor(triplets, static_cast<int>(m_interior.size()));
+    Eigen::SparseMatrix<double> L;
+    m_pattern.assemble(m_faces, m_interior_index, static_cast<int>(m_interior.size()),
+                       internal::Cotangent_weight{&m_half_cot}, L);
+    return m_interior_system->factor(L);
   }
 
   /// solves `L_II x = b` (one entry per interior vertex, in `interior_vertices()` order),
@@ -319,10 +319,10 @@ public:
       unknown[i] = (i == m_spring_ground) ? -1 : next++;
     const internal::Spring_weight weight{&m_faces, &m_points, &m_single_edges, exponent};
     internal::laplacian_row_sums(m_faces, m_vertices.size(), weight, m_spring_row_sums);
-    std::vector<internal::Triplet> triplets;
-    internal::laplacian_triplets(m_faces, unknown, weight, triplets);
+    Eigen::SparseMatrix<double> L;
+    m_pattern.assemble(m_faces, unknown, next, weight, L);
     m_spring_system = std::make_unique<System>();
-    return m_spring_system->factor(triplets, next);
+    return m_spring_system->factor(L);
   }
 
   /// the vertex at which the spring Laplacian is grounded.
@@ -425,6 +425,7 @@ private:
     m_interior_index.clear();
     m_cot_row_sums.clear();
     m_mean_spoke.clear();
+    m_pattern = internal::Laplacian_pattern();
     m_spring_row_sums.clear();
     m_border_loops = 0;
     m_loops.clear();
@@ -670,6 +671,7 @@ private:
     internal::laplacian_row_sums(m_faces, m_vertices.size(),
                                  internal::Cotangent_weight{&m_half_cot}, m_cot_row_sums);
     internal::mean_spoke_lengths(m_faces, m_points, m_single_edges, m_mean_spoke);
+    m_pattern = internal::Laplacian_pattern(m_vertices.size(), m_faces);
     return OK;
   }
 
@@ -691,6 +693,7 @@ private:
   std::size_t m_real_faces = 0;
   std::vector<double> m_cot_row_sums;
   std::vector<double> m_mean_spoke;
+  internal::Laplacian_pattern m_pattern;
   std::unique_ptr<System> m_interior_system;
   std::unique_ptr<System> m_spring_system;
   std::vector<double> m_spring_row_sums;

@@ -16,7 +16,9 @@
 #include <CGAL/Surface_mesh_parameterization/internal/sparse_solver.h>
 
 #include <Eigen/Core>
+#include <Eigen/Sparse>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -58,6 +60,118 @@ void laplacian_triplets(const std::vector<Face_indices>& faces,
     }
   }
 }
+
+// The sparsity pattern of the vertex graph (every vertex with itself and its neighbours,
+// sorted), built once per patch. It assembles the Laplacian restricted to a set of unknowns
+// directly in compressed column form: no triplet list (9 per face) and no sorting.
+class Laplacian_pattern
+{
+public:
+  Laplacian_pattern() = default;
+
+  Laplacian_pattern(std::size_t n, const std::vector<Face_indices>& faces)
+  {
+    // neighbours from the face edges (each edge seen from both faces, or once on a border)
+    std::vector<int> count(n, 1);  // the vertex itself
+    for(const Face_indices& t : faces)
+      for(int k = 0; k < 3; ++k)
+      {
+        ++count[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+        ++count[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])];
+      }
+    m_offsets.assign(n + 1, 0);
+    for(std::size_t i = 0; i < n; ++i)
+      m_offsets[i + 1] = m_offsets[i] + static_cast<std::size_t>(count[i]);
+    m_neighbors.resize(m_offsets[n]);
+    std::vector<std::size_t> fill(m_offsets.begin(), m_offsets.end() - 1);
+    for(std::size_t i = 0; i < n; ++i)
+      m_neighbors[fill[i]++] = static_cast<int>(i);
+    for(const Face_indices& t : faces)
+      for(int k = 0; k < 3; ++k)
+      {
+        const int a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
+        m_neighbors[fill[static_cast<std::size_t>(a)]++] = b;
+        m_neighbors[fill[static_cast<std::size_t>(b)]++] = a;
+      }
+    // sort and remove duplicates in place, then compact
+    std::size_t out = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t begin = m_offsets[i], end = m_offsets[i + 1];
+      std::sort(m_neighbors.begin() + static_cast<std::ptrdiff_t>(begin),
+                m_neighbors.begin() + static_cast<std::ptrdiff_t>(end));
+      m_offsets[i] = out;
+      for(std::size_t e = begin; e < end; ++e)
+        if(e == begin || m_neighbors[e] != m_neighbors[e - 1])
+          m_neighbors[out++] = m_neighbors[e];
+    }
+    m_offsets[n] = out;
+    m_neighbors.resize(out);
+    m_neighbors.shrink_to_fit();
+  }
+
+  std::size_t size() const { return m_offsets.empty() ? 0 : m_offsets.size() - 1; }
+
+  // The Laplacian L = D - W restricted to the unknowns (`unknown[i]` = row of vertex i, or -1;
+  // rows must increase with i), with the weights given per face corner as for
+  // laplacian_triplets(). `M` becomes m x m, compressed, both triangles stored.
+  template <class CornerWeight>
+  void assemble(const std::vector<Face_indices>& faces, const std::vector<int>& unknown, int m,
+                const CornerWeight& weight, Eigen::SparseMatrix<double>& M) const
+  {
+    std::vector<double> values(m_neighbors.size(), 0.);
+    auto slot = [this](int a, int b) {  // position of b among the neighbours of a
+      const int* first = m_neighbors.data() + m_offsets[static_cast<std::size_t>(a)];
+      const int* last = m_neighbors.data() + m_offsets[static_cast<std::size_t>(a) + 1];
+      return static_cast<std::size_t>(std::lower_bound(first, last, b) - m_neighbors.data());
+    };
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      for(int k = 0; k < 3; ++k)
+      {
+        const int a = faces[f][static_cast<std::size_t>((k + 1) % 3)];
+        const int b = faces[f][static_cast<std::size_t>((k + 2) % 3)];
+        const double w = weight(f, k);
+        values[slot(a, b)] -= w;
+        values[slot(b, a)] -= w;
+        values[slot(a, a)] += w;
+        values[slot(b, b)] += w;
+      }
+    std::size_t nnz = 0;
+    for(std::size_t i = 0; i < size(); ++i)
+      if(unknown[i] >= 0)
+        for(std::size_t e = m_offsets[i]; e < m_offsets[i + 1]; ++e)
+          if(unknown[static_cast<std::size_t>(m_neighbors[e])] >= 0)
+            ++nnz;
+    M.resize(m, m);
+    M.makeCompressed();
+    M.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+    int* outer = M.outerIndexPtr();
+    int* inner = M.innerIndexPtr();
+    double* value = M.valuePtr();
+    std::size_t p = 0;
+    int column = 0;
+    outer[0] = 0;
+    for(std::size_t i = 0; i < size(); ++i)
+    {
+      if(unknown[i] < 0)
+        continue;
+      for(std::size_t e = m_offsets[i]; e < m_offsets[i + 1]; ++e)
+      {
+        const int row = unknown[static_cast<std::size_t>(m_neighbors[e])];
+        if(row < 0)
+          continue;
+        inner[p] = row;
+        value[p] = values[e];
+        ++p;
+      }
+      outer[++column] = static_cast<int>(p);
+    }
+  }
+
+private:
+  std::vector<std::size_t> m_offsets;
+  std::vector<int> m_neighbors;
+};
 
 // d_i = sum_j w_ij over all neighbours.
 template <class CornerWeight>

@@ -77,6 +77,15 @@ void fill_matrix(Matrix& A, std::vector<Triplet>& triplets, int n)
   }
 }
 
+// Whether the traits are (or derive from) CGAL's Eigen_solver_traits, whose linear_solver(B, X)
+// uses only the factorization, not the matrix.
+template <class Traits, class = void>
+struct Is_eigen_solver_traits : std::false_type {};
+
+template <class Traits>
+struct Is_eigen_solver_traits<Traits, std::void_t<typename Traits::Solver> >
+  : std::is_base_of<CGAL::Eigen_solver_traits<typename Traits::Solver>, Traits> {};
+
 // Counters of the numerical work, to check and report reuse of factorizations.
 struct Solver_statistics
 {
@@ -116,21 +125,26 @@ public:
   // Factorizes the n x n matrix given as triplets (duplicates are summed). Releases them.
   Error_code factor(std::vector<Triplet>& triplets, int n)
   {
-    typedef std::chrono::steady_clock Clock;
-    m_factorized = false;
-    m_n = n;
     m_matrix = std::make_unique<Matrix>(n, n);
     fill_matrix(*m_matrix, triplets, n);
+    return factor_matrix(n);
+  }
 
-    const Clock::time_point start = Clock::now();
-    double D = 1.;
-    const bool ok = m_traits.factor(*m_matrix, D);
-    m_stats.factorization_seconds += std::chrono::duration<double>(Clock::now() - start).count();
-    ++m_stats.factorizations;
-    if(!ok || D != 1.)
-      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    m_factorized = true;
-    return OK;
+  // Factorizes the compressed n x n matrix M (both triangles). Takes its storage.
+  Error_code factor(Eigen::SparseMatrix<double>& M)
+  {
+    const int n = static_cast<int>(M.rows());
+    m_matrix = std::make_unique<Matrix>(n, n);
+    if constexpr(Wraps_eigen_sparse_matrix<Matrix>::value)
+      m_matrix->eigen_object().swap(M);
+    else
+    {
+      for(int j = 0; j < M.outerSize(); ++j)
+        for(Eigen::SparseMatrix<double>::InnerIterator it(M, j); it; ++it)
+          m_matrix->add_coef(static_cast<std::size_t>(it.row()), static_cast<std::size_t>(it.col()), it.value());
+    }
+    Eigen::SparseMatrix<double>().swap(M);
+    return factor_matrix(n);
   }
 
   // Solves A x = b with the factorization. Fails when the result is not finite.
@@ -163,6 +177,26 @@ public:
   }
 
 private:
+  Error_code factor_matrix(int n)
+  {
+    typedef std::chrono::steady_clock Clock;
+    m_factorized = false;
+    m_n = n;
+    const Clock::time_point start = Clock::now();
+    double D = 1.;
+    const bool ok = m_traits.factor(*m_matrix, D);
+    m_stats.factorization_seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    ++m_stats.factorizations;
+    // CGAL's Eigen_solver_traits solves from the factor alone: the matrix can go (a factor's
+    // worth of memory less, at the peak where both systems are alive)
+    if constexpr(Is_eigen_solver_traits<Solver_traits>::value)
+      m_matrix.reset();
+    if(!ok || D != 1.)
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    m_factorized = true;
+    return OK;
+  }
+
   Solver_traits m_traits;
   std::unique_ptr<Matrix> m_matrix;
   int m_n = 0;
