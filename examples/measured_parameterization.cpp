@@ -2,19 +2,24 @@
 // measured boundary parameterization of "Measured boundary parameterization based on
 // Poisson's equation" (Measured_conformal_parameterizer_3) and writes the UV layout.
 //
-//   measured_parameterization [INPUT] [OUTPUT.obj] [--center=poisson|vertex:N]
-//                             [--distance=poisson] [--solver=cholmod|ldlt]
-//                             [--svg=FILE] [--json] [--help]
+//   measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]
+//                             [--center=poisson|geodesic[:METHOD]|vertex:N]
+//                             [--distance=poisson|METHOD|straightest] [--solver=cholmod|ldlt]
+//                             [--svg=FILE] [--json] [--no-repair] [--help]
 //
 // Reads OFF, OBJ, PLY or STL (default: a real mesh of the project's data, or a generated
 // curved disk when that file is missing), maps the longest border, and writes an OBJ with
 // one UV per vertex (default: <input file stem>_uv.obj), optionally an SVG picture, and a
 // one-line summary or a JSON object with the times, the solver work and the distortion.
+// With --seams, the mesh (closed, or open with handles) is first cut along the seam edges
+// of a CGAL selection file: the program parameterizes the CGAL::Seam_mesh, and the OBJ gets
+// one UV per vertex of the seam mesh (one per side of a seam).
 // On any failure it says why on stderr, exits with a non-zero status and leaves no output
 // file. The library does no IO; this program is the IO layer (helpers in cli/).
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Seam_mesh.h>
 
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
@@ -31,9 +36,11 @@
 
 #include "cli/mesh_input.h"
 #include "cli/options.h"
+#include "cli/seam_selection.h"
 #include "cli/svg_layout.h"
 #include "cli/text_output.h"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -42,21 +49,27 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #ifndef MBP_DEFAULT_MESH
 #define MBP_DEFAULT_MESH ""
 #endif
 
-typedef CGAL::Simple_cartesian<double>                    Kernel;
-typedef Kernel::Point_2                                   Point_2;
-typedef Kernel::Point_3                                   Point_3;
-typedef CGAL::Surface_mesh<Point_3>                       Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor      vertex_descriptor;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor    halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor        face_descriptor;
-typedef Mesh::Property_map<vertex_descriptor, Point_2>    UV_map;
-typedef Mesh::Property_map<vertex_descriptor, bool>       Vertex_flag_map;
+typedef CGAL::Simple_cartesian<double>                                Kernel;
+typedef Kernel::Point_2                                               Point_2;
+typedef Kernel::Point_3                                               Point_3;
+typedef CGAL::Surface_mesh<Point_3>                                   Mesh;
+typedef boost::graph_traits<Mesh>::vertex_descriptor                  vertex_descriptor;
+typedef boost::graph_traits<Mesh>::halfedge_descriptor                halfedge_descriptor;
+typedef boost::graph_traits<Mesh>::edge_descriptor                    edge_descriptor;
+typedef boost::graph_traits<Mesh>::face_descriptor                    face_descriptor;
+
+// The mesh cut along the seams of --seams. Its vertices are halfedges of `Mesh` (one per side
+// of a seam); its faces are those of `Mesh`.
+typedef Mesh::Property_map<edge_descriptor, bool>                     Seam_edge_map;
+typedef Mesh::Property_map<vertex_descriptor, bool>                   Seam_vertex_map;
+typedef CGAL::Seam_mesh<Mesh, Seam_edge_map, Seam_vertex_map>         Seam_mesh;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
@@ -68,13 +81,31 @@ namespace {
 const int exit_failure = 1;  // the input cannot be parameterized, or a file cannot be written
 const int exit_usage = 2;    // command-line error
 
+// The input vertex (0-based, file order) of a vertex of the parameterized mesh.
+std::size_t input_index(const Mesh&, vertex_descriptor v) { return std::size_t(v); }
+std::size_t input_index(const Seam_mesh& seam_mesh, boost::graph_traits<Seam_mesh>::vertex_descriptor v)
+{
+  return std::size_t(target(halfedge_descriptor(v), seam_mesh.mesh()));
+}
+
+// The vertex of the parameterized mesh of input vertex `v`, which is not on a seam.
+vertex_descriptor mesh_vertex(const Mesh&, vertex_descriptor v) { return v; }
+boost::graph_traits<Seam_mesh>::vertex_descriptor mesh_vertex(const Seam_mesh& seam_mesh, vertex_descriptor v)
+{
+  // a seam mesh vertex is represented by a halfedge of the mesh; off the seams, by halfedge(v)
+  return boost::graph_traits<Seam_mesh>::halfedge_descriptor(halfedge(v, seam_mesh.mesh()));
+}
+
 // The center locator of the command line (a model of `MeasuredCenterLocator`), chosen at run
 // time among the user's vertex (`--center=vertex:N`, through `Fixed_center`), the Poisson
-// center and the geodesic centers, so that the method is instantiated once per solver
-// rather than once per solver, locator and distance.
+// center and the geodesic centers, so that the method is instantiated once per solver and
+// mesh type rather than once per solver, mesh type, locator and distance.
+template <class TriangleMesh>
 class Command_line_center_locator
 {
 public:
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+
   explicit Command_line_center_locator(const std::string& name = "poisson") : m_name(name) { }
   explicit Command_line_center_locator(vertex_descriptor v) : m_fixed(v), m_name("vertex") { }
 
@@ -84,28 +115,31 @@ public:
     if(m_name == "vertex")
       return m_fixed.locate_center(patch, center);
     if(m_name == "geodesic:fast-marching")
-      return SMP::Geodesic_center_locator<Mesh, SMP::Fast_marching_geodesics>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<TriangleMesh, SMP::Fast_marching_geodesics>().locate_center(patch, center);
     if(m_name == "geodesic:dijkstra")
-      return SMP::Geodesic_center_locator<Mesh, SMP::Dijkstra_geodesics>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<TriangleMesh, SMP::Dijkstra_geodesics>().locate_center(patch, center);
     if(m_name == "geodesic:heat")
-      return SMP::Geodesic_center_locator<Mesh, Heat>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<TriangleMesh, Heat>().locate_center(patch, center);
     if(m_name == "geodesic:heat-idt")
-      return SMP::Geodesic_center_locator<Mesh, Heat_idt>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<TriangleMesh, Heat_idt>().locate_center(patch, center);
     if(m_name == "geodesic:exact")
-      return SMP::Geodesic_center_locator<Mesh, SMP::Exact_geodesics>().locate_center(patch, center);
-    return SMP::Poisson_center_locator<Mesh>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<TriangleMesh, SMP::Exact_geodesics>().locate_center(patch, center);
+    return SMP::Poisson_center_locator<TriangleMesh>().locate_center(patch, center);
   }
 
 private:
-  SMP::Fixed_center<Mesh> m_fixed;
+  SMP::Fixed_center<TriangleMesh> m_fixed;
   std::string m_name;
 };
 
 // The border distance of the command line (a model of `MeasuredBorderDistance`), chosen at
 // run time: Poisson, a geodesic method, or straightest geodesics.
+template <class TriangleMesh>
 class Command_line_border_distance
 {
 public:
+  typedef typename SMP::Straightest_geodesic_border_distance<TriangleMesh>::Failure Straightest_failure;
+
   explicit Command_line_border_distance(const std::string& name = "poisson") : m_name(name) { }
 
   template <class Patch>
@@ -121,72 +155,101 @@ public:
   }
 
   // the border vertices straightest geodesics could not reach in the last call
-  const SMP::Straightest_geodesic_border_distance<Mesh>::Failure& straightest_failure() const
-  {
-    return m_straightest.last_failure();
-  }
+  const Straightest_failure& straightest_failure() const { return m_straightest.last_failure(); }
 
 private:
   template <class F>
   SMP::Error_code dispatch(const F& f) const
   {
     if(m_name == "fast-marching")
-      return f(SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics>());
+      return f(SMP::Geodesic_border_distance<TriangleMesh, SMP::Fast_marching_geodesics>());
     if(m_name == "dijkstra")
-      return f(SMP::Geodesic_border_distance<Mesh, SMP::Dijkstra_geodesics>());
+      return f(SMP::Geodesic_border_distance<TriangleMesh, SMP::Dijkstra_geodesics>());
     if(m_name == "heat")
-      return f(SMP::Geodesic_border_distance<Mesh, Heat>());
+      return f(SMP::Geodesic_border_distance<TriangleMesh, Heat>());
     if(m_name == "heat-idt")
-      return f(SMP::Geodesic_border_distance<Mesh, Heat_idt>());
+      return f(SMP::Geodesic_border_distance<TriangleMesh, Heat_idt>());
     if(m_name == "exact")
-      return f(SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics>());
+      return f(SMP::Geodesic_border_distance<TriangleMesh, SMP::Exact_geodesics>());
     if(m_name == "straightest")
       return f(m_straightest);
-    return f(SMP::Poisson_border_distance<Mesh>());
+    return f(SMP::Poisson_border_distance<TriangleMesh>());
   }
 
   std::string m_name;
-  SMP::Straightest_geodesic_border_distance<Mesh> m_straightest;  // its failure record is shared by copies
+  SMP::Straightest_geodesic_border_distance<TriangleMesh> m_straightest;  // its failure record is shared by copies
 };
 
-// What a parameterization produced, copied from the parameterizer's report and record
-// (whose types depend on the solver).
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// What a parameterization produced, copied from the parameterizer's report and record (whose
+// types depend on the mesh and the solver). Vertices are input vertex indices.
 struct Parameterization_result
 {
   SMP::Error_code status = SMP::ERROR_WRONG_PARAMETER;
-  vertex_descriptor center;
-  std::vector<vertex_descriptor> border;  // the longest border loop, from source(bhd)
+  std::size_t center = 0;               // input vertex
+  std::size_t border_vertices = 0;      // of the longest border loop
   bool border_convex = false;
   double preparation = 0., center_time = 0., distances = 0., border_map = 0., interior = 0., output = 0., total = 0.;
   int factorizations = 0, back_substitutions = 0;
   double factorization_seconds = 0., back_substitution_seconds = 0.;
   double degenerate_face_threshold = 0.;
-  SMP::Straightest_geodesic_border_distance<Mesh>::Failure straightest_failure;
+  std::size_t unreachable = 0;          // border vertices straightest geodesics did not reach
+  std::size_t first_unreachable = 0;    // the first of them (input vertex)
   std::size_t flipped_before_repair = 0;
   bool repaired = false, mean_value_interior = false;
   double blend = 0., repair_seconds = 0.;
   int repair_candidates = 0;
 };
 
-template <class SolverTraits>
-Parameterization_result run_parameterization(const Mesh& mesh, halfedge_descriptor bhd,
-                                             const Command_line_center_locator& locator,
-                                             const Command_line_border_distance& distance, bool repair,
-                                             UV_map uvmap, Vertex_flag_map parameterized)
+// A parameterized mesh in the numbering of the output files, the same for a mesh and for a
+// mesh cut along seams, so that the OBJ, the SVG and the report are written once. The 'v'
+// lines are the input vertices that are in a face; the 'vt' lines the UVs: one per vertex,
+// or, for a seam mesh, one per seam mesh vertex (a vertex on a seam has one per side).
+struct Uv_layout
 {
-  typedef SMP::Measured_conformal_parameterizer_3<Mesh, Command_line_center_locator,
-                                                  Command_line_border_distance,
+  std::vector<std::size_t> vertices;                   // per 'v': its input vertex, increasing
+  std::vector<std::size_t> uv_vertex;                  // per 'vt': its 'v' (0-based)
+  std::vector<std::array<double, 2> > uv;              // per 'vt'
+  std::vector<std::array<std::size_t, 3> > faces;      // per face, in input order: 'vt' indices (0-based)
+  std::vector<SMP::Face_quality> face_quality;         // per face
+  SMP::Parameterization_quality quality;
+  std::vector<std::size_t> border;                     // the longest border loop, from source(bhd): 'vt' indices
+  std::size_t center = 0;                              // 'vt' index of the center
+  double quality_seconds = 0.;                         // time of the distortion measures
+};
+
+template <class SolverTraits, class TriangleMesh, class UVMap, class FlagMap>
+Parameterization_result run_parameterization(const TriangleMesh& tm,
+                                             typename boost::graph_traits<TriangleMesh>::halfedge_descriptor bhd,
+                                             const Command_line_center_locator<TriangleMesh>& locator,
+                                             const Command_line_border_distance<TriangleMesh>& distance,
+                                             bool repair, UVMap uvmap, FlagMap parameterized,
+                                             std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& border)
+{
+  typedef SMP::Measured_conformal_parameterizer_3<TriangleMesh, Command_line_center_locator<TriangleMesh>,
+                                                  Command_line_border_distance<TriangleMesh>,
                                                   SolverTraits>                   Parameterizer;
   Parameterizer parameterizer(locator, distance);
   if(!repair)
     parameterizer.set_repair(Parameterizer::NO_REPAIR);
   Parameterization_result r;
-  r.status = parameterizer.parameterize(mesh, bhd, uvmap, get(boost::vertex_index, mesh), parameterized);
-  r.straightest_failure = distance.straightest_failure();
+  // the vertex index map is not used by the parameterizer (it indexes the component itself)
+  r.status = parameterizer.parameterize(tm, bhd, uvmap, get(CGAL::dynamic_vertex_property_t<int>(), tm),
+                                        parameterized);
+  const auto& straightest = distance.straightest_failure();
+  r.unreachable = straightest.unreachable;
+  if(r.unreachable > 0)
+    r.first_unreachable = input_index(tm, straightest.vertex);
 
   const typename Parameterizer::Report& report = parameterizer.last_report();
-  r.center = parameterizer.center();
-  r.border = parameterizer.border_parameterizer().border_vertices();
+  if(parameterizer.center() != boost::graph_traits<TriangleMesh>::null_vertex())
+    r.center = input_index(tm, parameterizer.center());
+  border = parameterizer.border_parameterizer().border_vertices();
+  r.border_vertices = border.size();
   r.border_convex = parameterizer.border_parameterizer().is_border_convex();
   r.preparation = report.preparation_seconds;
   r.center_time = report.center_seconds;
@@ -209,9 +272,164 @@ Parameterization_result run_parameterization(const Mesh& mesh, halfedge_descript
   return r;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point start)
+// The vertex of `tm` that `--center=vertex:N` names, or a failure (N out of range, in no
+// face, on a seam, on the longest border).
+template <class TriangleMesh>
+mbp_cli::Failure center_vertex(const TriangleMesh& tm, const Mesh& mesh, const Seam_mesh* seam_mesh,
+                               typename boost::graph_traits<TriangleMesh>::halfedge_descriptor bhd, std::size_t n,
+                               typename boost::graph_traits<TriangleMesh>::vertex_descriptor& center)
 {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor tm_halfedge_descriptor;
+  const std::string option = "--center=vertex:" + std::to_string(n);
+  mbp_cli::Failure f;  // a check of the program: no library code
+  // Surface_mesh numbers the vertices in the order they were added: the file order.
+  if(n >= num_vertices(mesh))
+  {
+    f.detail = option + ": vertex index out of range (the mesh has " + std::to_string(num_vertices(mesh)) +
+               " vertices, numbered from 0)";
+    return f;
+  }
+  const vertex_descriptor v(static_cast<Mesh::size_type>(n));
+  if(mesh.is_isolated(v))
+  {
+    f.detail = option + ": the vertex is in no face";
+    return f;
+  }
+  if(seam_mesh != nullptr && seam_mesh->has_on_seam(v))
+  {
+    f.detail = option + ": the vertex lies on a seam, which is on the border of the cut mesh; the center must be"
+                        " an interior vertex";
+    return f;
+  }
+  center = mesh_vertex(tm, v);
+  for(tm_halfedge_descriptor h : CGAL::halfedges_around_face(bhd, tm))
+    if(target(h, tm) == center)
+      f.detail = option + ": the vertex lies on the border; the center must be an interior vertex";
+  return f;
+}
+
+// Parameterizes `tm` (the mesh, or the seam mesh over it) from its border halfedge `bhd` and
+// fills `layout`, or returns why it failed. `mesh` is the input mesh; `seam_mesh` is `&tm`
+// for a seam mesh and null otherwise.
+template <class TriangleMesh>
+mbp_cli::Failure parameterize_mesh(const TriangleMesh& tm, const Mesh& mesh, const Seam_mesh* seam_mesh,
+                                   typename boost::graph_traits<TriangleMesh>::halfedge_descriptor bhd,
+                                   const mbp_cli::Options& options,
+                                   Parameterization_result& result, Uv_layout& layout)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor   tm_vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor tm_halfedge_descriptor;
+
+  Command_line_center_locator<TriangleMesh> locator(options.center);
+  const Command_line_border_distance<TriangleMesh> distance(options.distance);
+  if(options.fixed_center)
+  {
+    tm_vertex_descriptor v;
+    const mbp_cli::Failure f = center_vertex(tm, mesh, seam_mesh, bhd, options.center_vertex, v);
+    if(f.failed())
+      return f;
+    locator = Command_line_center_locator<TriangleMesh>(v);
+  }
+
+  auto uvmap = get(CGAL::dynamic_vertex_property_t<Point_2>(), tm);
+  auto parameterized = get(CGAL::dynamic_vertex_property_t<bool>(), tm);
+  for(tm_vertex_descriptor v : vertices(tm))
+    put(parameterized, v, false);
+  std::vector<tm_vertex_descriptor> border;
+#ifdef MBP_WITH_CHOLMOD
+  if(options.solver == mbp_cli::Solver::cholmod)
+    result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(tm, bhd, locator, distance, options.repair,
+                                                                           uvmap, parameterized, border);
+  else
+#endif
+    result = run_parameterization<CGAL::Default>(tm, bhd, locator, distance, options.repair, uvmap, parameterized,
+                                                 border);
+
+  if(result.status != SMP::OK)
+  {
+    mbp_cli::Failure f;
+    f.code = result.status;
+    if(result.status == SMP::ERROR_DEGENERATE_FACE)
+      f.detail = mbp_cli::find_degenerate_face(mesh, result.degenerate_face_threshold);
+    else if(result.status == SMP::ERROR_NON_FINITE_COORDINATES)
+      f.detail = mbp_cli::find_non_finite_vertex(mesh);
+    else if(result.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)
+    {
+      const mbp_cli::Mesh_topology input = mbp_cli::mesh_topology(mesh);
+      if(seam_mesh != nullptr)
+        f.detail = mbp_cli::explain_cut(input, mbp_cli::mesh_topology(*seam_mesh));
+      else if(input.genus > 0)
+        f.detail = "the surface has genus " + std::to_string(input.genus) +
+                   " (handles); cut every handle with seams: --seams=FILE.selection.txt";
+      else
+        f.detail = "the longest border touches itself, or a vertex is non-manifold";
+    }
+    else if(result.status == SMP::ERROR_NO_1_TO_1_MAPPING)
+      f.detail = std::to_string(result.flipped_before_repair) +
+                 " faces are flipped by the measured border" +
+                 (options.repair ? std::string(" and no blend toward a circle repairs them")
+                                 : std::string(" (repair is off: --no-repair)"));
+    else if(result.status == SMP::ERROR_DEGENERATE_BORDER_MAP)
+      f.detail = "seen from the center (vertex " + std::to_string(result.center) +
+                 "), two consecutive border vertices lie in the same direction, or a border distance is not"
+                 " positive; try another center (--center=geodesic or --center=vertex:N)";
+    else if(result.status == SMP::ERROR_DISTANCE_COMPUTATION_FAILED && options.distance == "straightest" &&
+            result.unreachable > 0)
+      f.detail = "the straightest geodesic from the center (vertex " + std::to_string(result.center) +
+                 ") does not reach border vertex " + std::to_string(result.first_unreachable) + " (" +
+                 std::to_string(result.unreachable) + " of " + std::to_string(result.border_vertices) +
+                 " border vertices are not reached)";
+    return f;
+  }
+
+  // The numbering of the output: 'v' lines are the input vertices that are in a face, in
+  // input order (the checks before leave one connected component, all of which is
+  // parameterized); 'vt' lines the parameterized vertices of `tm`, grouped by input vertex.
+  std::vector<std::pair<std::size_t, tm_vertex_descriptor> > uv_order;
+  for(tm_vertex_descriptor v : vertices(tm))
+    if(get(parameterized, v))
+      uv_order.emplace_back(input_index(tm, v), v);
+  std::stable_sort(uv_order.begin(), uv_order.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  auto uv_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  for(const auto& u : uv_order)
+  {
+    const Point_2& q = get(uvmap, u.second);
+    if(!std::isfinite(q.x()) || !std::isfinite(q.y()))
+    {
+      mbp_cli::Failure f;
+      f.code = SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+      f.detail = "the solver gave a non-finite UV at vertex " + std::to_string(u.first);
+      return f;
+    }
+    if(layout.vertices.empty() || layout.vertices.back() != u.first)
+      layout.vertices.push_back(u.first);
+    put(uv_index, u.second, layout.uv.size());
+    layout.uv_vertex.push_back(layout.vertices.size() - 1);
+    layout.uv.push_back({q.x(), q.y()});
+  }
+  for(face_descriptor fd : faces(tm))  // the faces of a seam mesh are those of the mesh
+  {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(tm_halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(fd, tm), tm))
+      t[k++] = get(uv_index, target(h, tm));
+    layout.faces.push_back(t);
+  }
+  for(tm_vertex_descriptor v : border)
+    layout.border.push_back(get(uv_index, v));
+  for(const auto& u : uv_order)
+    if(u.first == result.center)  // the center is interior: one UV
+      layout.center = get(uv_index, u.second);
+
+  // the distortion, per face
+  const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  auto face_quality = get(CGAL::dynamic_face_property_t<SMP::Face_quality>(), tm);
+  layout.quality = SMP::measure_quality_per_face(tm, faces(tm), uvmap, face_quality);
+  for(face_descriptor fd : faces(tm))
+    layout.face_quality.push_back(get(face_quality, fd));
+  layout.quality_seconds = seconds_since(start);
+  return mbp_cli::Failure();
 }
 
 // A line of text for a comment of the OBJ file: no line breaks or other control characters.
@@ -264,7 +482,7 @@ int main(int argc, char** argv)
                 << num_faces(mesh) << " faces)\n";
     }
   }
-  const std::string where = generated ? std::string("generated curved disk") : options.input;
+  std::string where = generated ? std::string("generated curved disk") : options.input;  // names the failures
   auto fail = [&where](const mbp_cli::Failure& f) {
     std::cerr << "error: " << where << ": " << f.message() << "\n";
     return exit_failure;
@@ -292,165 +510,118 @@ int main(int argc, char** argv)
   }
 
   // ------------------------------------------------------------------ checks
-  halfedge_descriptor bhd;
-  double border_length = 0.;
   {
-    const mbp_cli::Failure f = mbp_cli::check_mesh(mesh, bhd, border_length);
+    const mbp_cli::Failure f = mbp_cli::check_mesh(mesh);
     if(f.failed())
       return fail(f);
   }
 
-  Command_line_center_locator locator(options.center);
-  const Command_line_border_distance distance(options.distance);
-  if(options.fixed_center)
+  // ------------------------------------------------------------------ parameterization
+  // With seams, of the mesh cut along them: a Seam_mesh over `mesh`. Both give a `Uv_layout`.
+  const bool with_seams = !options.seams.empty();
+  std::vector<edge_descriptor> seams;
+  double border_length = 0.;
+  Parameterization_result result;
+  Uv_layout layout;
+  if(with_seams)
   {
-    // Surface_mesh numbers the vertices in the order they were added: the file order.
-    const std::size_t n = options.center_vertex;
-    mbp_cli::Failure f;  // a check of the program: no library code
-    if(n >= num_vertices(mesh))
-      f.detail = "--center=vertex:" + std::to_string(n) + ": vertex index out of range (the mesh has " +
-                 std::to_string(num_vertices(mesh)) + " vertices, numbered from 0)";
-    else
+    const std::string error = mbp_cli::read_seam_selection(options.seams, mesh, seams);
+    if(!error.empty())
     {
-      const vertex_descriptor v(static_cast<Mesh::size_type>(n));
-      if(mesh.is_isolated(v))
-        f.detail = "--center=vertex:" + std::to_string(n) + ": the vertex is in no face";
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(bhd, mesh))
-        if(target(h, mesh) == v)
-          f.detail = "--center=vertex:" + std::to_string(n) +
-                     ": the vertex lies on the border; the center must be an interior vertex";
-      locator = Command_line_center_locator(v);
+      std::cerr << "error: " << options.seams << ": " << error << "\n";
+      return exit_failure;
     }
-    if(!f.detail.empty())
+    Seam_edge_map seam_edges = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+    Seam_vertex_map seam_vertices = mesh.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
+    Seam_mesh seam_mesh(mesh, seam_edges, seam_vertices);
+    for(edge_descriptor e : seams)
+      seam_mesh.add_seam(source(e, mesh), target(e, mesh));
+    where += " cut along " + options.seams;
+
+    // one piece and no new border loop (handles left uncut are found by the parameterizer)
+    mbp_cli::Failure f;
+    f.detail = mbp_cli::check_cut(mbp_cli::mesh_topology(mesh), mbp_cli::mesh_topology(seam_mesh));
+    if(f.failed())
+    {
+      f.code = SMP::ERROR_NO_TOPOLOGICAL_DISC;
+      return fail(f);
+    }
+    boost::graph_traits<Seam_mesh>::halfedge_descriptor bhd;
+    f = mbp_cli::find_longest_border(seam_mesh, bhd, border_length);
+    if(!f.failed())
+      f = parameterize_mesh(seam_mesh, mesh, &seam_mesh, bhd, options, result, layout);
+    if(f.failed())
       return fail(f);
   }
-
-  // ------------------------------------------------------------------ parameterization
-  UV_map uvmap = mesh.add_property_map<vertex_descriptor, Point_2>("v:uv", Point_2(0., 0.)).first;
-  Vertex_flag_map parameterized = mesh.add_property_map<vertex_descriptor, bool>("v:parameterized", false).first;
-  Parameterization_result result;
-#ifdef MBP_WITH_CHOLMOD
-  if(options.solver == mbp_cli::Solver::cholmod)
-    result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(mesh, bhd, locator, distance,
-                                                                           options.repair, uvmap, parameterized);
   else
-#endif
-    result = run_parameterization<CGAL::Default>(mesh, bhd, locator, distance, options.repair, uvmap,
-                                                 parameterized);
-
-  if(result.status != SMP::OK)
   {
-    mbp_cli::Failure f;
-    f.code = result.status;
-    if(result.status == SMP::ERROR_DEGENERATE_FACE)
-      f.detail = mbp_cli::find_degenerate_face(mesh, result.degenerate_face_threshold);
-    else if(result.status == SMP::ERROR_NON_FINITE_COORDINATES)
-      f.detail = mbp_cli::find_non_finite_vertex(mesh);
-    else if(result.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)
-      f.detail = "the longest border touches itself, a vertex is non-manifold, or the surface has handles";
-    else if(result.status == SMP::ERROR_NO_1_TO_1_MAPPING)
-      f.detail = std::to_string(result.flipped_before_repair) +
-                 " faces are flipped by the measured border" +
-                 (options.repair ? std::string(" and no blend toward a circle repairs them")
-                                 : std::string(" (repair is off: --no-repair)"));
-    else if(result.status == SMP::ERROR_DISTANCE_COMPUTATION_FAILED && options.distance == "straightest" &&
-            result.straightest_failure.unreachable > 0)
-      f.detail = "the straightest geodesic from the center (vertex " + std::to_string(std::size_t(result.center)) +
-                 ") does not reach border vertex " + std::to_string(std::size_t(result.straightest_failure.vertex)) +
-                 " (" + std::to_string(result.straightest_failure.unreachable) + " of " +
-                 std::to_string(result.border.size()) + " border vertices are not reached)";
-    return fail(f);
+    halfedge_descriptor bhd;
+    mbp_cli::Failure f = mbp_cli::find_longest_border(mesh, bhd, border_length);
+    if(!f.failed())
+      f = parameterize_mesh(mesh, mesh, nullptr, bhd, options, result, layout);
+    if(f.failed())
+      return fail(f);
   }
-
-  // The OBJ numbering: the vertices of the faces, in input order. (The checks above leave one
-  // connected component, all of which is parameterized; only isolated vertices are left out.)
-  std::vector<std::size_t> obj_index(num_vertices(mesh), std::size_t(-1));
-  std::vector<vertex_descriptor> obj_vertices;
-  for(vertex_descriptor v : vertices(mesh))
-    if(get(parameterized, v))
-    {
-      const Point_2& p = get(uvmap, v);
-      if(!std::isfinite(p.x()) || !std::isfinite(p.y()))
-      {
-        mbp_cli::Failure f;
-        f.code = SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-        f.detail = "the solver gave a non-finite UV at vertex " + std::to_string(std::size_t(v));
-        return fail(f);
-      }
-      obj_index[std::size_t(v)] = obj_vertices.size();
-      obj_vertices.push_back(v);
-    }
-  const std::size_t isolated = num_vertices(mesh) - obj_vertices.size();
-
-  // ------------------------------------------------------------------ quality
-  start = Clock::now();
-  auto face_quality = mesh.add_property_map<face_descriptor, SMP::Face_quality>("f:quality").first;
-  const SMP::Parameterization_quality quality = SMP::measure_quality_per_face(mesh, faces(mesh), uvmap, face_quality);
-  const double quality_seconds = seconds_since(start);
+  const std::size_t isolated = num_vertices(mesh) - layout.vertices.size();
+  const SMP::Parameterization_quality& quality = layout.quality;
 
   // ------------------------------------------------------------------ output files
   start = Clock::now();
   const std::string mesh_name = generated ? std::string("curved disk (generated)")
                                           : fs::path(options.input).filename().string();
-  const std::size_t center_index = std::size_t(result.center);
+  const std::size_t center_index = result.center;
   std::string obj;
-  obj.reserve(96 * obj_vertices.size() + 32 * num_faces(mesh));
+  obj.reserve(96 * layout.vertices.size() + 48 * layout.uv.size() + 48 * layout.faces.size());
   obj += "# UV layout by measured_parameterization: measured boundary parameterization (center: " +
          options.center_name() + ", border distances: " + options.distance + "), discrete conformal interior\n";
   obj += "# input: " + one_line(generated ? mesh_name : options.input) + "\n";
-  obj += "# " + std::to_string(obj_vertices.size()) + " vertices, " + std::to_string(num_faces(mesh)) +
+  if(with_seams)
+    obj += "# cut along " + std::to_string(seams.size()) + " seam edges (" + one_line(options.seams) +
+           "): one 'vt' per side of a seam, faces 'f v/vt'\n";
+  obj += "# " + std::to_string(layout.vertices.size()) + " vertices, " + std::to_string(layout.faces.size()) +
          " faces, center: input vertex " + std::to_string(center_index) + " (0-based)\n";
-  for(vertex_descriptor v : obj_vertices)
+  for(std::size_t i : layout.vertices)
   {
-    const Point_3& p = mesh.point(v);
+    const Point_3& p = mesh.point(vertex_descriptor(static_cast<Mesh::size_type>(i)));
     obj += "v " + mbp_cli::exact(p.x()) + " " + mbp_cli::exact(p.y()) + " " + mbp_cli::exact(p.z()) + "\n";
   }
-  for(vertex_descriptor v : obj_vertices)
-  {
-    const Point_2& q = get(uvmap, v);
-    obj += "vt " + mbp_cli::exact(q.x()) + " " + mbp_cli::exact(q.y()) + "\n";
-  }
-  for(face_descriptor f : faces(mesh))
+  for(const std::array<double, 2>& q : layout.uv)
+    obj += "vt " + mbp_cli::exact(q[0]) + " " + mbp_cli::exact(q[1]) + "\n";
+  for(const std::array<std::size_t, 3>& t : layout.faces)
   {
     obj += "f";
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-    {
-      const std::string i = std::to_string(obj_index[std::size_t(v)] + 1);
-      obj += " " + i + "/" + i;
-    }
+    for(std::size_t u : t)
+      obj += " " + std::to_string(layout.uv_vertex[u] + 1) + "/" + std::to_string(u + 1);
     obj += "\n";
   }
 
   std::string svg;
   if(!options.svg.empty())
   {
-    mbp_cli::Svg_layout layout;
-    for(vertex_descriptor v : obj_vertices)
-      layout.uv.push_back({get(uvmap, v).x(), get(uvmap, v).y()});
-    for(face_descriptor f : faces(mesh))
+    mbp_cli::Svg_layout picture;
+    picture.uv = layout.uv;
+    picture.faces = layout.faces;
+    for(const SMP::Face_quality& fq : layout.face_quality)
     {
-      std::array<std::size_t, 3> t;
-      std::size_t k = 0;
-      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-        t[k++] = obj_index[std::size_t(v)];
-      layout.faces.push_back(t);
-      const SMP::Face_quality& fq = get(face_quality, f);
-      layout.face_angle_distortion.push_back(fq.angle_distortion);
-      layout.face_flipped.push_back(!(fq.uv_area > 0.));
+      picture.face_angle_distortion.push_back(fq.angle_distortion);
+      picture.face_flipped.push_back(!(fq.uv_area > 0.));
     }
-    for(vertex_descriptor v : result.border)
-      layout.border.push_back(obj_index[std::size_t(v)]);
-    layout.center = obj_index[center_index];
-    layout.center_label = "center (vertex " + std::to_string(center_index) + ")";
-    layout.title = mesh_name;
-    layout.caption.push_back(std::to_string(obj_vertices.size()) + " vertices, " + std::to_string(num_faces(mesh)) +
-                             " faces, border of " + std::to_string(result.border.size()) + " vertices, center: " +
-                             options.center_name() + " center, " + options.distance + " distances");
-    layout.caption.push_back("angle distortion " + mbp_cli::rounded(quality.angle_distortion) + ",  L2 stretch " +
-                             mbp_cli::rounded(quality.l2_stretch) + ",  quasi-conformal mean " +
-                             mbp_cli::rounded(quality.quasi_conformal_mean) + ",  flipped faces " +
-                             std::to_string(quality.flipped_faces));
-    svg = mbp_cli::svg_document(layout);
+    picture.border = layout.border;
+    picture.center = layout.center;
+    picture.center_label = "center (vertex " + std::to_string(center_index) + ")";
+    picture.title = mesh_name;
+    picture.caption.push_back(std::to_string(layout.vertices.size()) + " vertices, " +
+                              std::to_string(layout.faces.size()) + " faces, " +
+                              (with_seams ? std::to_string(seams.size()) + " seam edges (" +
+                                              std::to_string(layout.uv.size()) + " UVs), "
+                                          : std::string()) +
+                              "border of " + std::to_string(result.border_vertices) + " vertices, center: " +
+                              options.center_name() + " center, " + options.distance + " distances");
+    picture.caption.push_back("angle distortion " + mbp_cli::rounded(quality.angle_distortion) + ",  L2 stretch " +
+                              mbp_cli::rounded(quality.l2_stretch) + ",  quasi-conformal mean " +
+                              mbp_cli::rounded(quality.quasi_conformal_mean) + ",  flipped faces " +
+                              std::to_string(quality.flipped_faces));
+    svg = mbp_cli::svg_document(picture);
   }
 
   {
@@ -476,8 +647,8 @@ int main(int argc, char** argv)
               << " faces are flipped in the UV layout: the map is not one-to-one"
               << (result.border_convex ? "" : " (the measured border is not convex)") << "\n";
 
-  const Point_3& c = mesh.point(result.center);
-  const Point_2& cuv = get(uvmap, result.center);
+  const Point_3& c = mesh.point(vertex_descriptor(static_cast<Mesh::size_type>(center_index)));
+  const std::array<double, 2>& cuv = layout.uv[layout.center];
   if(options.json)
   {
     mbp_cli::Json_writer j;
@@ -496,17 +667,23 @@ int main(int argc, char** argv)
     j.member("solver", mbp_cli::solver_name(options.solver));
     j.member("center_locator", options.fixed_center ? std::string("vertex") : options.center);
     j.member("border_distance", options.distance);
-    j.member("vertices", obj_vertices.size());
-    j.member("faces", std::size_t(num_faces(mesh)));
+    j.member("vertices", layout.vertices.size());
+    j.member("faces", layout.faces.size());
     j.member("isolated_vertices", isolated);
+    if(with_seams)
+      j.member("seams", options.seams);
+    else
+      j.null_member("seams");
+    j.member("seam_edges", seams.size());
+    j.member("uvs", layout.uv.size());
     j.begin_object("border")
-       .member("vertices", result.border.size())
+       .member("vertices", result.border_vertices)
        .member("length", border_length)
        .member("convex", result.border_convex)
        .end_object();
     j.begin_object("center").member("index", center_index);
     j.begin_array("point").element(c.x()).element(c.y()).element(c.z()).end_array();
-    j.begin_array("uv").element(cuv.x()).element(cuv.y()).end_array();
+    j.begin_array("uv").element(cuv[0]).element(cuv[1]).end_array();
     j.end_object();
     j.begin_object("times")
        .member("preparation", result.preparation)
@@ -519,7 +696,7 @@ int main(int argc, char** argv)
        .end_object();
     j.begin_object("io_times")
        .member("read", read_seconds)
-       .member("quality", quality_seconds)
+       .member("quality", layout.quality_seconds)
        .member("write", write_seconds)
        .end_object();
     j.begin_object("repair")
@@ -554,8 +731,11 @@ int main(int argc, char** argv)
   else
   {
     using mbp_cli::rounded;
-    std::cout << mesh_name << ": V " << obj_vertices.size() << ", F " << num_faces(mesh)
-              << " | border " << result.border.size() << " vertices, length " << rounded(border_length)
+    std::cout << mesh_name << ": V " << layout.vertices.size() << ", F " << layout.faces.size()
+              << (with_seams ? " | seams " + std::to_string(seams.size()) + " edges, " +
+                                 std::to_string(layout.uv.size()) + " UVs"
+                             : std::string())
+              << " | border " << result.border_vertices << " vertices, length " << rounded(border_length)
               << " | center " << center_index << " (" << options.center_name() << ")"
               << " | distances " << options.distance
               << " | seconds: preparation " << rounded(result.preparation, 3) << ", center "

@@ -153,12 +153,14 @@ struct Obj
 {
   std::vector<std::array<double, 3> > v;
   std::vector<std::array<double, 2> > vt;
-  std::vector<std::array<std::size_t, 3> > f;  // 0-based
-  std::size_t other_lines = 0;                 // lines that are not v, vt, f, comments or empty
+  std::vector<std::array<std::size_t, 3> > f;   // 'v' indices, 0-based
+  std::vector<std::array<std::size_t, 3> > ft;  // 'vt' indices, 0-based (equal to f without seams)
+  std::size_t other_lines = 0;                  // lines that are not v, vt, f, comments or empty
 };
 
-// Reads the OBJ the program writes; every face corner must be "a/a" with a valid index.
-Obj read_obj(const fs::path& path)
+// Reads the OBJ the program writes; every face corner must be "a/b" with valid indices, and
+// "a/a" unless `seams` (one UV per vertex).
+Obj read_obj(const fs::path& path, bool seams = false)
 {
   std::ifstream in(path);
   BOOST_REQUIRE_MESSAGE(in.good(), "cannot open " << path);
@@ -184,7 +186,7 @@ Obj read_obj(const fs::path& path)
     }
     else if(tag == "f")
     {
-      std::array<std::size_t, 3> face;
+      std::array<std::size_t, 3> face, uv_face;
       std::string corner;
       for(std::size_t k = 0; k < 3; ++k)
       {
@@ -192,23 +194,26 @@ Obj read_obj(const fs::path& path)
         const std::size_t slash = corner.find('/');
         BOOST_REQUIRE_MESSAGE(slash != std::string::npos, "corner without a UV index: " << line);
         const std::string a = corner.substr(0, slash), b = corner.substr(slash + 1);
-        BOOST_REQUIRE_MESSAGE(a == b, "v and vt indices differ: " << line);
-        const long index = std::stol(a);
-        BOOST_REQUIRE_MESSAGE(index >= 1, "bad index: " << line);
+        BOOST_REQUIRE_MESSAGE(seams || a == b, "v and vt indices differ: " << line);
+        const long index = std::stol(a), uv_index = std::stol(b);
+        BOOST_REQUIRE_MESSAGE(index >= 1 && uv_index >= 1, "bad index: " << line);
         face[k] = std::size_t(index - 1);
+        uv_face[k] = std::size_t(uv_index - 1);
       }
       BOOST_REQUIRE_MESSAGE(!(s >> corner), "face with more than 3 corners: " << line);
       obj.f.push_back(face);
+      obj.ft.push_back(uv_face);
     }
     else
       ++obj.other_lines;
   }
-  for(const auto& face : obj.f)
-    for(std::size_t i : face)
-      BOOST_REQUIRE(i < obj.v.size() && i < obj.vt.size());
+  for(std::size_t i = 0; i < obj.f.size(); ++i)
+    for(std::size_t k = 0; k < 3; ++k)
+      BOOST_REQUIRE(obj.f[i][k] < obj.v.size() && obj.ft[i][k] < obj.vt.size());
   return obj;
 }
 
+// the signed area of a UV triangle given by its 'vt' indices
 double signed_uv_area(const Obj& obj, const std::array<std::size_t, 3>& f)
 {
   const auto &a = obj.vt[f[0]], &b = obj.vt[f[1]], &c = obj.vt[f[2]];
@@ -593,9 +598,285 @@ BOOST_AUTO_TEST_CASE(help)
   const Run r = scratch.run({"--help"});
   BOOST_TEST(r.code == 0);
   BOOST_TEST(contains(r.out, "usage: measured_parameterization"));
-  for(const char* option : {"--center=vertex:N", "--distance=poisson", "--svg=FILE", "--json", "--solver", "_uv.obj"})
+  for(const char* option : {"--center=vertex:N", "--distance=poisson", "--svg=FILE", "--json", "--solver", "_uv.obj",
+                            "--seams=FILE.selection.txt", "Seam_mesh"})
     BOOST_TEST(contains(r.out, option), option);
   BOOST_TEST(scratch.files().empty());
+}
+
+
+// ---------------------------------------------------------------- seams
+
+namespace {
+
+// The seam files of the examples (examples/data).
+std::string example_data(const std::string& name) { return std::string(MBP_EXAMPLE_DATA_DIR) + "/" + name; }
+
+// A closed torus of radii 2 and 0.7: an n x m grid (i around the axis, j around the tube),
+// each quad split along the diagonal from (i, j) to (i + 1, j + 1); vertex (i, j) is i * m + j.
+mbp_test::Soup closed_torus(int n, int m)
+{
+  mbp_test::Soup s;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j)
+    {
+      const double u = 2. * CGAL_PI * i / n, v = 2. * CGAL_PI * j / m;
+      s.points.push_back({(2. + 0.7 * std::cos(v)) * std::cos(u), (2. + 0.7 * std::cos(v)) * std::sin(u),
+                          0.7 * std::sin(v)});
+    }
+  auto id = [&](int i, int j) { return static_cast<std::size_t>(((i + n) % n) * m + (j + m) % m); };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j)
+    {
+      s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+// A selection file whose third line holds the edges.
+std::string selection_text(const std::vector<std::pair<std::size_t, std::size_t> >& edges)
+{
+  std::string s = "\n\n";
+  for(const auto& e : edges)
+    s += std::to_string(e.first) + " " + std::to_string(e.second) + " ";
+  return s + "\n";
+}
+
+// The seam edges of the third line of a selection file.
+std::vector<std::pair<std::size_t, std::size_t> > read_selection_edges(const std::string& path)
+{
+  std::ifstream in(path);
+  std::string line;
+  for(int l = 0; l < 3; ++l)
+    BOOST_REQUIRE_MESSAGE(std::getline(in, line), "cannot read line " << l + 1 << " of " << path);
+  std::istringstream numbers(line);
+  std::vector<std::pair<std::size_t, std::size_t> > edges;
+  std::size_t a = 0, b = 0;
+  while(numbers >> a >> b)
+    edges.emplace_back(a, b);
+  return edges;
+}
+
+// Checks the OBJ of a run with seams on a closed mesh: the mesh's vertices ('v', exactly,
+// input order) and faces, one 'vt' per seam mesh vertex (a vertex of seam degree d has d
+// copies), grouped by vertex, each 'vt' used by one vertex, the copies of a seam vertex apart,
+// every UV in [0,1]^2 and no flipped face. Returns the number of 'vt' lines.
+std::size_t check_seam_obj(const Obj& obj, const Mesh& mesh, const std::vector<std::pair<std::size_t, std::size_t> >& seams)
+{
+  BOOST_TEST(obj.other_lines == 0u);
+  BOOST_REQUIRE_EQUAL(obj.v.size(), num_vertices(mesh));
+  BOOST_REQUIRE_EQUAL(obj.f.size(), num_faces(mesh));
+  std::size_t exact = 0;
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const auto& p = mesh.point(v);
+    const auto& q = obj.v[std::size_t(v)];
+    exact += (q[0] == p.x() && q[1] == p.y() && q[2] == p.z()) ? 1 : 0;
+  }
+  BOOST_TEST(exact == num_vertices(mesh), "vertices written exactly and in input order: " << exact);
+
+  // one 'vt' per seam mesh vertex
+  std::vector<std::size_t> seam_degree(num_vertices(mesh), 0);
+  for(const auto& e : seams)
+  {
+    ++seam_degree[e.first];
+    ++seam_degree[e.second];
+  }
+  std::size_t expected_uvs = num_vertices(mesh);
+  for(std::size_t d : seam_degree)
+    expected_uvs += (d > 0) ? d - 1 : 0;
+  BOOST_TEST(obj.vt.size() == expected_uvs);
+  BOOST_TEST(obj.vt.size() > obj.v.size());
+
+  // the faces of the mesh; each 'vt' belongs to one 'v', and the 'vt' lines are grouped by 'v'
+  std::vector<std::size_t> vertex_of_uv(obj.vt.size(), std::size_t(-1));
+  std::size_t same_faces = 0, inconsistent = 0, repeated = 0, flipped = 0;
+  std::size_t i = 0;
+  for(auto f : faces(mesh))
+  {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      t[k++] = std::size_t(v);
+    same_faces += (t == obj.f[i]) ? 1 : 0;
+    const auto& uv = obj.ft[i];
+    repeated += (uv[0] == uv[1] || uv[1] == uv[2] || uv[0] == uv[2]) ? 1 : 0;
+    for(k = 0; k < 3; ++k)
+    {
+      std::size_t& owner = vertex_of_uv[uv[k]];
+      if(owner == std::size_t(-1))
+        owner = obj.f[i][k];
+      inconsistent += (owner == obj.f[i][k]) ? 0 : 1;
+    }
+    flipped += (signed_uv_area(obj, uv) > 0.) ? 0 : 1;
+    ++i;
+  }
+  BOOST_TEST(same_faces == num_faces(mesh), "faces written as in the input: " << same_faces);
+  BOOST_TEST(repeated == 0u, repeated << " faces use one 'vt' twice");
+  BOOST_TEST(inconsistent == 0u, inconsistent << " corners use a 'vt' of another vertex");
+  BOOST_TEST(std::count(vertex_of_uv.begin(), vertex_of_uv.end(), std::size_t(-1)) == 0, "unused 'vt' lines");
+  BOOST_TEST(std::is_sorted(vertex_of_uv.begin(), vertex_of_uv.end()), "'vt' lines grouped by vertex");
+  BOOST_TEST(flipped == 0u, flipped << " flipped faces");
+
+  // every vertex has as many UVs as its seam degree (at least one), apart from each other
+  std::vector<std::vector<std::size_t> > uvs_of(num_vertices(mesh));
+  for(std::size_t u = 0; u < vertex_of_uv.size(); ++u)
+    if(vertex_of_uv[u] < uvs_of.size())
+      uvs_of[vertex_of_uv[u]].push_back(u);
+  std::size_t wrong_count = 0, close = 0;
+  for(std::size_t v = 0; v < uvs_of.size(); ++v)
+  {
+    wrong_count += (uvs_of[v].size() == (std::max)(std::size_t(1), seam_degree[v])) ? 0 : 1;
+    for(std::size_t a = 0; a < uvs_of[v].size(); ++a)
+      for(std::size_t b = a + 1; b < uvs_of[v].size(); ++b)
+      {
+        const auto &p = obj.vt[uvs_of[v][a]], &q = obj.vt[uvs_of[v][b]];
+        close += (std::hypot(p[0] - q[0], p[1] - q[1]) > 1e-6) ? 0 : 1;
+      }
+  }
+  BOOST_TEST(wrong_count == 0u, wrong_count << " vertices without one UV per side of their seams");
+  BOOST_TEST(close == 0u, close << " pairs of copies of a seam vertex at the same UV");
+
+  const double eps = 1e-12;
+  std::size_t outside = 0;
+  for(const auto& q : obj.vt)
+    outside += (std::isfinite(q[0]) && std::isfinite(q[1]) && q[0] >= -eps && q[0] <= 1. + eps &&
+                q[1] >= -eps && q[1] <= 1. + eps) ? 0 : 1;
+  BOOST_TEST(outside == 0u, outside << " UVs outside [0,1]^2");
+  return obj.vt.size();
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(seams_cut_a_closed_mesh)
+{
+  // fandisk.off (closed, genus 0) cut along the shortest edge path of the example's seams
+  const std::string path = mbp_test::require_mesh("fandisk.off");
+  const std::string selection = example_data("fandisk.selection.txt");
+  Mesh mesh;
+  mbp_test::read_mesh(path, mesh);
+  const std::vector<std::pair<std::size_t, std::size_t> > seams = read_selection_edges(selection);
+  BOOST_REQUIRE(!seams.empty());
+
+  Scratch scratch;
+  const Run r = scratch.run({path, "out.obj", "--seams=" + selection, "--json", "--svg=out.svg"});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  BOOST_TEST((scratch.files() == std::set<std::string>{"out.obj", "out.svg"}));
+  const std::size_t uvs = check_seam_obj(read_obj(scratch.work / "out.obj", true), mesh, seams);
+
+  const boost::property_tree::ptree j = parse_json(r.out);
+  BOOST_TEST(j.get<std::string>("seams") == selection);
+  BOOST_TEST(j.get<std::size_t>("seam_edges") == seams.size());
+  BOOST_TEST(j.get<std::size_t>("uvs") == uvs);
+  BOOST_TEST(j.get<std::size_t>("vertices") == num_vertices(mesh));
+  BOOST_TEST(j.get<std::size_t>("faces") == num_faces(mesh));
+  BOOST_TEST(j.get<std::size_t>("border.vertices") == 2 * seams.size());  // a path: both sides
+  BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
+  // the center is interior: not on a seam
+  const std::size_t center = j.get<std::size_t>("center.index");
+  for(const auto& e : seams)
+    BOOST_TEST((e.first != center && e.second != center));
+  const std::string svg = Scratch::read_text(scratch.work / "out.svg");
+  BOOST_TEST(svg.substr(svg.size() - 7) == "</svg>\n");
+  BOOST_TEST(contains(svg, std::to_string(seams.size()) + " seam edges"));
+
+  // the one-line summary names the seams
+  Scratch summary;
+  const Run s = summary.run({path, "out.obj", "--seams=" + selection});
+  BOOST_REQUIRE_EQUAL(s.code, 0);
+  BOOST_TEST(contains(s.out, "seams " + std::to_string(seams.size()) + " edges, " + std::to_string(uvs) + " UVs"),
+             s.out);
+
+  // without seams the JSON says so, with one UV per vertex
+  Scratch plain;
+  plain.write("grid.off", grid_off);
+  const Run p = plain.run({"grid.off", "--json"});
+  BOOST_REQUIRE_EQUAL(p.code, 0);
+  const boost::property_tree::ptree pj = parse_json(p.out);
+  BOOST_TEST(pj.get<std::string>("seams") == "null");
+  BOOST_TEST(pj.get<std::size_t>("seam_edges") == 0u);
+  BOOST_TEST(pj.get<std::size_t>("uvs") == 9u);
+}
+
+BOOST_AUTO_TEST_CASE(closed_mesh_without_seams)
+{
+  const std::string path = mbp_test::require_mesh("fandisk.off");
+  Scratch scratch;
+  const Run r = scratch.run({path, "out.obj", "--svg=out.svg"});
+  BOOST_TEST(r.code == 1);
+  BOOST_TEST(contains(r.err, "error: " + path + ": the mesh is closed (it has no border)"), r.err);
+  BOOST_TEST(contains(r.err, "--seams=FILE.selection.txt"), r.err);
+  BOOST_TEST(r.out.empty());
+  BOOST_TEST(scratch.files().empty());
+}
+
+BOOST_AUTO_TEST_CASE(seams_on_a_torus)
+{
+  // genus 1: a meridian and a longitude through one vertex cut it into a disk; a meridian
+  // path that closes no loop leaves the handle (the parameterizer's ERROR_NO_TOPOLOGICAL_DISC),
+  // and the whole meridian loop alone leaves a cylinder (two border loops)
+  const int n = 16, m = 10;
+  const mbp_test::Soup soup = closed_torus(n, m);
+  Mesh mesh;
+  mbp_test::soup_to_mesh(soup, mesh);
+  auto id = [&](int i, int j) { return static_cast<std::size_t>(((i + n) % n) * m + (j + m) % m); };
+  std::vector<std::pair<std::size_t, std::size_t> > meridian, longitude;
+  for(int j = 0; j < m; ++j)
+    meridian.emplace_back(id(0, j), id(0, j + 1));
+  for(int i = 0; i < n; ++i)
+    longitude.emplace_back(id(i, 0), id(i + 1, 0));
+  std::vector<std::pair<std::size_t, std::size_t> > cut_graph = meridian;
+  cut_graph.insert(cut_graph.end(), longitude.begin(), longitude.end());
+  const std::vector<std::pair<std::size_t, std::size_t> > path(meridian.begin(), meridian.end() - 1);
+
+  {
+    Scratch scratch;
+    scratch.write("torus.off", off_text(soup));
+    scratch.write("cut.selection.txt", selection_text(cut_graph));
+    const Run r = scratch.run({"torus.off", "out.obj", "--seams=cut.selection.txt", "--json"});
+    BOOST_REQUIRE_EQUAL(r.code, 0);
+    const std::size_t uvs = check_seam_obj(read_obj(scratch.work / "out.obj", true), mesh, cut_graph);
+    BOOST_TEST(uvs == std::size_t(n * m + 3 + (n - 1) + (m - 1)));  // vertex 0 four times, the others twice
+    const boost::property_tree::ptree j = parse_json(r.out);
+    BOOST_TEST(j.get<std::size_t>("seam_edges") == std::size_t(n + m));
+    BOOST_TEST(j.get<std::size_t>("uvs") == uvs);
+    BOOST_TEST(j.get<std::size_t>("border.vertices") == std::size_t(2 * (n + m)));
+  }
+  {
+    Scratch scratch;
+    scratch.write("torus.off", off_text(soup));
+    scratch.write("path.selection.txt", selection_text(path));
+    const Run r = scratch.run({"torus.off", "out.obj", "--seams=path.selection.txt", "--svg=out.svg"});
+    BOOST_TEST(r.code == 1);
+    BOOST_TEST(contains(r.err, "error: torus.off cut along path.selection.txt: input mesh is not a topological disc"),
+               r.err);
+    BOOST_TEST(contains(r.err, "the seams do not cut every handle"), r.err);
+    BOOST_TEST(contains(r.err, "still has genus 1"), r.err);
+    BOOST_TEST(contains(r.err, "a meridian and a longitude through one vertex"), r.err);
+    BOOST_TEST(r.out.empty());
+    BOOST_TEST((scratch.files() == std::set<std::string>{"torus.off", "path.selection.txt"}));
+  }
+  {
+    Scratch scratch;
+    scratch.write("torus.off", off_text(soup));
+    scratch.write("loop.selection.txt", selection_text(meridian));
+    const Run r = scratch.run({"torus.off", "out.obj", "--seams=loop.selection.txt"});
+    BOOST_TEST(r.code == 1);
+    BOOST_TEST(contains(r.err, "not a topological disc"), r.err);
+    BOOST_TEST(contains(r.err, "2 border loops"), r.err);
+    BOOST_TEST(contains(r.err, "cylinder"), r.err);
+    BOOST_TEST((scratch.files() == std::set<std::string>{"torus.off", "loop.selection.txt"}));
+  }
+  {
+    // without seams: closed
+    Scratch scratch;
+    scratch.write("torus.off", off_text(soup));
+    const Run r = scratch.run({"torus.off", "out.obj"});
+    BOOST_TEST(r.code == 1);
+    BOOST_TEST(contains(r.err, "the mesh is closed"), r.err);
+    BOOST_TEST((scratch.files() == std::set<std::string>{"torus.off"}));
+  }
 }
 
 // ---------------------------------------------------------------- bad input
@@ -660,7 +941,8 @@ std::vector<Bad_case> bad_cases()
   };
   std::vector<Bad_case> cases = {
     {"quad mesh", {{"quads.off", quads}}, with({"quads.off"}), 1, {"not triangular", "4 vertices"}},
-    {"closed octahedron", {{"octahedron.off", octahedron}}, with({"octahedron.off"}), 1, {"closed", "no border"}},
+    {"closed octahedron", {{"octahedron.off", octahedron}}, with({"octahedron.off"}), 1,
+     {"closed", "no border", "--seams=FILE.selection.txt"}},
     {"NaN coordinate (text)", {{"nan.off", nan_grid}}, with({"nan.off"}), 1, {"non-finite", "'nan'", "line 7"}},
     {"NaN coordinate (binary)", {{"nan.ply", binary_ply_with_nan()}}, with({"nan.ply"}), 1, {"non-finite", "vertex 4"}},
     {"infinite coordinate", {{"inf.obj", inf_obj}}, with({"inf.obj"}), 1, {"non-finite", "'inf'"}},
@@ -693,6 +975,41 @@ std::vector<Bad_case> bad_cases()
     {"output is a directory", {{"grid.off", grid}}, {"grid.off", ".", "--svg=out.svg"}, 1, {"cannot write", "directory"}},
     {"same output and svg", {{"grid.off", grid}}, {"grid.off", "out.obj", "--svg=out.obj"}, 2, {"same file"}},
     {"output given twice", {{"grid.off", grid}}, {"grid.off", "a.obj", "--output=b.obj"}, 2, {"given twice"}},
+    // seams (octahedron: vertices +-x 0 1, +-y 2 3, +-z 4 5; 0 and 1 are not joined)
+    {"seam file missing", {{"octahedron.off", octahedron}}, with({"octahedron.off", "--seams=none.selection.txt"}), 1,
+     {"none.selection.txt", "no such file"}},
+    {"seam file is a directory", {{"octahedron.off", octahedron}}, with({"octahedron.off", "--seams=."}), 1,
+     {"directory"}},
+    {"not a selection file", {{"octahedron.off", octahedron}, {"s.selection.txt", "OFF\n6 8 0\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"s.selection.txt", "line 1", "'OFF' is not an index"}},
+    {"selection file with two lines", {{"octahedron.off", octahedron}, {"s.selection.txt", "0 4\n\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"2 lines", "three lines"}},
+    {"seam index out of range", {{"octahedron.off", octahedron}, {"s.selection.txt", "\n\n4 0 0 6\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1,
+     {"line 3, seam edge 2 (0 6)", "vertex index 6 is out of range", "6 vertices"}},
+    {"seam pair not an edge", {{"octahedron.off", octahedron}, {"s.selection.txt", "\n\n4 0 0 1\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"seam edge 2 (0 1)", "not joined by an edge"}},
+    {"seam pair of one vertex", {{"octahedron.off", octahedron}, {"s.selection.txt", "\n\n4 4\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"not an edge", "vertex 4"}},
+    {"odd number of seam indices", {{"octahedron.off", octahedron}, {"s.selection.txt", "\n\n4 0 5\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"odd number"}},
+    {"no seam edge", {{"octahedron.off", octahedron}, {"s.selection.txt", "0\n\n\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"no seam edge"}},
+    {"seam edge twice", {{"octahedron.off", octahedron}, {"s.selection.txt", "\n\n4 0 0 5 0 4\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"seam edge 3 (0 4)", "same edge as seam edge 1"}},
+    {"text after the seams", {{"octahedron.off", octahedron}, {"s.selection.txt", "\n\n4 0\n1 2\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"line 4", "unexpected"}},
+    {"selected vertex of another mesh", {{"octahedron.off", octahedron}, {"s.selection.txt", "17\n\n4 0\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"line 1", "out of range", "another mesh"}},
+    {"seam on the border", {{"grid.off", grid}, {"s.selection.txt", "\n\n0 1\n"}},
+     with({"grid.off", "--seams=s.selection.txt"}), 1, {"seam edge 1 (0 1)", "border"}},
+    {"seams that separate", {{"octahedron.off", octahedron}, {"s.selection.txt", "\n\n0 2 2 1 1 3 3 0\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt"}), 1, {"cut along s.selection.txt", "2 pieces"}},
+    {"center on a seam", {{"octahedron.off", octahedron}, {"s.selection.txt", "\n\n4 0 0 5\n"}},
+     with({"octahedron.off", "--seams=s.selection.txt", "--center=vertex:0"}), 1, {"vertex:0", "on a seam"}},
+    {"seams without file", {{"octahedron.off", octahedron}}, with({"octahedron.off", "--seams="}), 2, {"--seams"}},
+    {"seams given twice", {{"octahedron.off", octahedron}}, with({"octahedron.off", "--seams=a", "--seams=b"}), 2,
+     {"--seams", "twice"}},
   };
   return cases;
 }

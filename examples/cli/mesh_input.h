@@ -201,12 +201,9 @@ void make_curved_disk(Mesh& mesh)
 }
 
 /// checks what the program needs before the library runs, with precise messages: faces, all
-/// triangles, one connected component, a border. Sets `bhd` to a halfedge of the longest
-/// border and `border_length` to its 3D length.
+/// triangles, one connected component.
 template <class Mesh>
-Failure check_mesh(const Mesh& mesh,
-                   typename boost::graph_traits<Mesh>::halfedge_descriptor& bhd,
-                   double& border_length)
+Failure check_mesh(const Mesh& mesh)
 {
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
   Failure f;
@@ -247,11 +244,23 @@ Failure check_mesh(const Mesh& mesh,
     return f;
   }
 
-  const auto border = CGAL::Polygon_mesh_processing::longest_border(mesh);
-  if(border.first == boost::graph_traits<Mesh>::null_halfedge())
+  return f;
+}
+
+/// sets `bhd` to a halfedge of the longest border of `tm` (a mesh, or a `Seam_mesh`, whose
+/// seams are on its border) and `border_length` to the 3D length of that border. Fails for a
+/// closed mesh, which needs seams.
+template <class TriangleMesh>
+Failure find_longest_border(const TriangleMesh& tm,
+                            typename boost::graph_traits<TriangleMesh>::halfedge_descriptor& bhd,
+                            double& border_length)
+{
+  Failure f;
+  const auto border = CGAL::Polygon_mesh_processing::longest_border(tm);
+  if(border.first == boost::graph_traits<TriangleMesh>::null_halfedge())
   {
-    f.code = SMP::ERROR_NO_TOPOLOGICAL_DISC;
-    f.detail = "it is closed (it has no border); cut it open into a disk first";
+    f.detail = "the mesh is closed (it has no border): give seams that cut it open into a disk with"
+               " --seams=FILE.selection.txt";
     return f;
   }
   bhd = border.first;

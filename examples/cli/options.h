@@ -30,6 +30,7 @@ struct Options
   std::string input;        // empty: the built-in default mesh
   std::string output;       // OUTPUT.obj or --output=FILE; empty: <input file stem>_uv.obj in the current directory
   std::string svg;          // empty: no picture
+  std::string seams;        // --seams=FILE: a CGAL selection file of seam edges; empty: no seams
   bool json = false;
   bool help = false;
   bool repair = true;       // --no-repair turns it off
@@ -63,7 +64,7 @@ inline bool is_geodesic_method(const std::string& name)
 inline std::string usage(const std::string& default_mesh)
 {
   std::string u =
-    "usage: measured_parameterization [INPUT] [OUTPUT.obj]\n"
+    "usage: measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]\n"
     "                                 [--center=poisson|geodesic[:METHOD]|vertex:N]\n"
     "                                 [--distance=poisson|METHOD|straightest] [--solver=cholmod|ldlt]\n"
     "                                 [--output=FILE] [--svg=FILE] [--json] [--no-repair] [--help]\n"
@@ -71,11 +72,12 @@ inline std::string usage(const std::string& default_mesh)
     "Flattens a disk-like triangle mesh with the measured boundary parameterization of\n"
     "\"Measured boundary parameterization based on Poisson's equation\": the longest border is\n"
     "laid out around a center vertex at its measured distances from it, and the interior is\n"
-    "the discrete conformal map with that border fixed.\n"
+    "the discrete conformal map with that border fixed. A closed mesh, or a mesh with handles,\n"
+    "is first cut open along seams (--seams).\n"
     "\n"
     "  INPUT              a triangle mesh: .off, .obj, .ply or .stl, one connected component\n"
     "                     with at least one border (holes are allowed; the longest border is\n"
-    "                     mapped). Default: ";
+    "                     mapped), or cut along --seams. Default: ";
   u += default_mesh.empty() ? std::string("none configured") : default_mesh;
   u +=
     "\n"
@@ -84,15 +86,27 @@ inline std::string usage(const std::string& default_mesh)
     "                     line per 'v' line, faces 'f a/a b/b c/c'. Vertices that are in no face\n"
     "                     are left out. Default: <INPUT file stem>_uv.obj in the current\n"
     "                     directory (curved_disk_uv.obj for the generated mesh).\n"
+    "                     With --seams: one 'vt' line per vertex of the cut mesh (a vertex on a\n"
+    "                     seam gets one UV for each side), faces 'f a/i b/j c/k'.\n"
     "\n"
     "options:\n"
+    "  --seams=FILE.selection.txt\n"
+    "                     cut the mesh along seams before mapping it (CGAL::Seam_mesh): the\n"
+    "                     third line of this CGAL selection file lists the seam edges as pairs\n"
+    "                     of 0-based vertex indices in file order (lines 1 and 2, selected\n"
+    "                     vertices and faces, are not used). Needed for a closed mesh. The seams\n"
+    "                     must cut the surface into a disk (holes are allowed): a tree of edges\n"
+    "                     on a closed surface of genus 0, 2g independent loops for genus g\n"
+    "                     (for a torus, a meridian and a longitude through one vertex), and no\n"
+    "                     closed loop that separates the surface\n"
     "  --center=poisson   center at the maximum of the boundary Poisson distance map (BPDM,\n"
     "                     default)\n"
     "  --center=geodesic[:METHOD]\n"
     "                     center at the maximum of the geodesic distance from the border (BGDM),\n"
     "                     computed with METHOD (default fast-marching)\n"
     "  --center=vertex:N  center at vertex N: 0-based, in file order (for STL, in order of first\n"
-    "                     appearance); it must be in a face and not on the longest border\n"
+    "                     appearance); it must be in a face and not on the longest border or a\n"
+    "                     seam\n"
     "  --distance=poisson distances from the center to the border by the Poisson distance map\n"
     "                     (default)\n"
     "  --distance=METHOD  geodesic distances from the center, computed with METHOD\n"
@@ -114,9 +128,10 @@ inline std::string usage(const std::string& default_mesh)
     "                     blended toward a circle, as little as needed, until none is left)\n"
     "  -h, --help         print this help and exit\n"
     "\n"
-    "The summary gives the number of vertices (V) and faces (F), the border (vertices, 3D\n"
-    "length), the center (0-based index in the input), the time of each stage of the\n"
-    "parameterization in seconds, the factorizations and back-substitutions, and the\n"
+    "The summary gives the number of vertices (V) and faces (F), with --seams the number of seam\n"
+    "edges and of UVs, the border (vertices, 3D length; a seam counts on both sides), the\n"
+    "center (0-based index in the input), the time of each stage of the parameterization in\n"
+    "seconds, the factorizations and back-substitutions, and the\n"
     "distortion: angle distortion (the paper's conformal distortion), Sander's L2 stretch\n"
     "(1 is optimal), the area-weighted mean quasi-conformal distortion s1/s2 (1 is\n"
     "conformal) and the number of flipped faces.\n"
@@ -146,7 +161,7 @@ inline std::string parse_options(int argc, char** argv, Options& o)
   using internal::starts_with;
   std::vector<std::string> positional;
   bool seen_center = false, seen_distance = false, seen_solver = false, seen_svg = false, seen_json = false;
-  bool seen_output = false;
+  bool seen_output = false, seen_seams = false;
   bool options_ended = false;
 
   // `--name=value`: the value, or an error for a missing or repeated option.
@@ -251,6 +266,14 @@ inline std::string parse_options(int argc, char** argv, Options& o)
       if(value.empty())
         return "option --output needs a file name: --output=FILE";
       o.output = value;
+    }
+    else if(arg == "--seams" || starts_with(arg, "--seams="))
+    {
+      if(!(error = value_of(arg, "--seams", seen_seams, value)).empty())
+        return error;
+      if(value.empty())
+        return "option --seams needs a file name: --seams=FILE.selection.txt";
+      o.seams = value;
     }
     else if(arg == "--svg" || starts_with(arg, "--svg="))
     {
