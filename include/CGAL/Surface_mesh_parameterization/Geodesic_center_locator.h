@@ -23,7 +23,8 @@ namespace Surface_mesh_parameterization {
 ///
 /// The boundary geodesic distance map center (the paper's BGDM, section 4.1): the geodesic
 /// distance from the whole border loop (all its vertices are sources) is computed with
-/// `Method`, and the center is its maximum over the interior vertices.
+/// `Method`, and the center is its maximum over the interior vertices (not on a hole's
+/// border).
 ///
 /// Ties, which BGDM has on symmetric shapes (two maxima on the paper's ellipse), are broken
 /// as for `Poisson_center_locator`: by the distance to the mean position of the tied maxima,

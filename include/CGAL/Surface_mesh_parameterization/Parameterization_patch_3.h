@@ -241,6 +241,8 @@ public:
   /// its border halfedges (`source()` of each), i.e. counterclockwise around the hole as
   /// seen with the faces' orientation. Empty for a patch built by `build_component()`.
   const std::vector<std::vector<int> >& hole_loops() const { return m_hole_loops; }
+  /// whether local vertex `i` lies on a hole (a border loop other than the main one).
+  bool is_on_hole(std::size_t i) const { return i < m_on_hole.size() && m_on_hole[i]; }
 
   /// @}
 
@@ -430,6 +432,7 @@ private:
     m_border_loops = 0;
     m_loops.clear();
     m_hole_loops.clear();
+    m_on_hole.clear();
     m_real_vertices = 0;
     m_real_faces = 0;
     m_interior_system.reset();
@@ -522,8 +525,13 @@ private:
       if(main)
         continue;
       m_hole_loops.emplace_back();
+      m_on_hole.resize(m_vertices.size(), false);
       for(halfedge_descriptor b : loop)
-        m_hole_loops.back().push_back(index(source(b, tm)));
+      {
+        const int i = index(source(b, tm));
+        m_hole_loops.back().push_back(i);
+        m_on_hole[static_cast<std::size_t>(i)] = true;
+      }
     }
   }
 
@@ -689,6 +697,7 @@ private:
   int m_border_loops = 0;
   std::vector<std::vector<halfedge_descriptor> > m_loops;  // during construction only
   std::vector<std::vector<int> > m_hole_loops;
+  std::vector<bool> m_on_hole;
   std::size_t m_real_vertices = 0;
   std::size_t m_real_faces = 0;
   std::vector<double> m_cot_row_sums;

@@ -21,7 +21,7 @@ namespace Surface_mesh_parameterization {
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
 ///
 /// The paper's center locator (section 4.1): the center is the maximum, over the interior
-/// vertices, of the boundary Poisson distance map (`boundary_poisson_distance_map()`,
+/// vertices (not on a hole's border), of the boundary Poisson distance map (`boundary_poisson_distance_map()`,
 /// cotangent weights, the border loop constrained).
 ///
 /// Ties: values within a relative `1e-9` of the maximum count as tied. Among several tied

@@ -25,9 +25,11 @@ namespace internal {
 // Relative tolerance under which two values of a distance map count as tied maxima.
 constexpr double center_tie_tolerance = 1e-9;
 
-// Returns the real interior vertex (local index; virtual vertices, which fill holes, are
-// never centers) that maximizes `values`, or -1 when there is no real interior vertex or a
-// value is not finite.
+// Returns the interior vertex (local index) that maximizes `values`, or -1 when there is no
+// candidate or a value is not finite. Candidates are the interior vertices of the surface:
+// neither virtual (the filling of a hole) nor on a hole's border (a vertex on a hole can sit
+// at the same 3D point as a vertex of the main border, for example where a seam opened the
+// hole, which would make the polar map degenerate).
 //
 // Ties: every interior vertex whose value is within `center_tie_tolerance * |max|` of the
 // maximum is a tied maximum. When there are several, the center is chosen by the distance
@@ -48,7 +50,7 @@ int argmax_with_tie_break(const Patch& patch, const std::vector<double>& values)
   std::vector<int> interior;
   interior.reserve(patch.interior_vertices().size());
   for(int i : patch.interior_vertices())
-    if(!patch.is_virtual(static_cast<std::size_t>(i)))
+    if(!patch.is_virtual(static_cast<std::size_t>(i)) && !patch.is_on_hole(static_cast<std::size_t>(i)))
       interior.push_back(i);
   double best = -std::numeric_limits<double>::infinity();
   for(int i : interior)
