@@ -13,6 +13,8 @@
 #include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
+#include <CGAL/Surface_mesh_parameterization/internal/border_search.h>
+#include <CGAL/Surface_mesh_parameterization/internal/fast_marching_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/polar_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/repair.h>
 
@@ -25,12 +27,32 @@
 #include <Eigen/Core>
 
 #include <chrono>
+#include <cmath>
 #include <cstddef>
+#include <future>
+#include <limits>
 #include <memory>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
+
+template <class TriangleMesh, class Method> class Geodesic_border_distance;
+
+namespace internal {
+
+// Whether a border distance policy is fast marching geodesics (then the automatic border's
+// second member is the Poisson distance map instead).
+template <class Policy>
+struct Is_fast_marching_border : std::false_type {};
+
+template <class TriangleMesh>
+struct Is_fast_marching_border<Geodesic_border_distance<TriangleMesh, Fast_marching_geodesics> >
+  : std::true_type {};
+
+} // namespace internal
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
 ///
@@ -111,6 +133,40 @@ public:
     BLEND_TOWARD_CIRCLE
   };
 
+  /// Which border the call lays out.
+  enum Border_choice
+  {
+    /// the border of the `BorderDistance` policy (the paper's method). The default.
+    MEASURED_BORDER,
+    /// the best border of a family, by the paper's angle distortion (METHOD.md section 5) of
+    /// the discrete conformal map it gives; see `set_border_choice()`.
+    AUTOMATIC_BORDER
+  };
+
+  /// The members of the border family of `AUTOMATIC_BORDER`.
+  enum Border_family
+  {
+    /// the circle with arc-length angles (CGAL's circular border)
+    CIRCLE,
+    /// the `BorderDistance` policy's measured border, blended toward the circle
+    POLICY_BORDER,
+    /// the other measured border (fast marching geodesic distances, or the Poisson distance
+    /// map when the policy is fast marching), blended toward the circle
+    SECOND_BORDER
+  };
+
+  /// A border tried by `AUTOMATIC_BORDER`.
+  struct Border_candidate
+  {
+    Border_family family;
+    /// the blend toward the circle (1 for the circle)
+    double blend;
+    /// whether the discrete conformal map of this border is one-to-one
+    bool valid;
+    /// its angle distortion (`+infinity` when not valid)
+    double objective;
+  };
+
   /// What the last call did and how long each stage took (wall-clock seconds).
   struct Report
   {
@@ -150,6 +206,15 @@ public:
     int repair_candidates = 0;
     /// time of the repair (validity check included)
     double repair_seconds = 0.;
+    /// `AUTOMATIC_BORDER`: every border tried, in the order tried, and the index of the kept
+    /// one (-1 when none was valid and the measured border was repaired instead)
+    std::vector<Border_candidate> border_candidates;
+    int chosen_candidate = -1;
+    /// `AUTOMATIC_BORDER`: whether the second measured border is the Poisson distance map
+    /// (rather than fast marching geodesics)
+    bool second_border_is_poisson = false;
+    /// `AUTOMATIC_BORDER`: time of the search (the second border's distances included)
+    double search_seconds = 0.;
   };
 
   /// creates a parameterizer with the given policies.
@@ -204,7 +269,19 @@ public:
     }
 
     std::vector<double> u, v;
-    if(status == OK)
+    bool chosen = false;
+    if(status == OK && m_border_choice == AUTOMATIC_BORDER)
+    {
+      status = choose_border(patch, border_uv, u, v, report);
+      chosen = (status == OK);
+      if(status == ERROR_NO_1_TO_1_MAPPING)  // no valid member: the measured border, repaired
+        status = OK;
+      const Clock::time_point t2 = Clock::now();
+      report.search_seconds = seconds(t, t2);
+      t = t2;
+    }
+
+    if(status == OK && !chosen)
     {
       status = solve_interior(patch, border_uv, u, v);
       const Clock::time_point t2 = Clock::now();
@@ -212,7 +289,7 @@ public:
       t = t2;
     }
 
-    if(status == OK)
+    if(status == OK && !chosen)
     {
       std::vector<Eigen::Vector2d> uv;
       internal::assemble_uv(patch, border_uv, u, v, uv);
@@ -256,6 +333,23 @@ public:
     return status;
   }
 
+  /// chooses the border (default: `MEASURED_BORDER`). With `AUTOMATIC_BORDER` the call tries
+  /// a family of borders on the one factorization of the interior Laplacian, each for two
+  /// back-substitutions and one evaluation of the angle distortion, and keeps the valid one of
+  /// lowest angle distortion. The family: the circle (arc-length angles); the policy's
+  /// measured border and a second measured border (fast marching geodesic distances from the
+  /// center, or the Poisson distance map when the policy uses fast marching); and their
+  /// blends toward the circle in polar coordinates, angle and radius each
+  /// \f$ (1 - t) \cdot \mathrm{measured} + t \cdot \mathrm{circle} \f$ after normalizing the
+  /// mean radius. The search: \f$ t = 0, 1/2, 1 \f$ (the circle once) for both measured
+  /// borders, then four golden-section steps around the better grid point of each: 13 borders
+  /// at most. The circle and both pure measured borders are members, so the result is never
+  /// worse than any of them by that measure. `last_report().border_candidates` lists every
+  /// border tried. If no member is valid the measured border is repaired (`Repair`).
+  void set_border_choice(Border_choice choice) { m_border_choice = choice; }
+  /// see `set_border_choice()`.
+  Border_choice border_choice() const { return m_border_choice; }
+
   /// chooses what to do when the result is not one-to-one (default: `BLEND_TOWARD_CIRCLE`).
   void set_repair(Repair repair) { m_repair = repair; }
   /// see `set_repair()`.
@@ -274,22 +368,21 @@ public:
   vertex_descriptor center() const { return m_border.center(); }
 
 private:
-  // Step 4: L_II u_I = -L_IB u_B and the same for v, with the patch's factorization.
+  // Step 4: L_II u_I = -L_IB u_B and the same for v, with the patch's factorization (one
+  // pass over it for both).
   static Error_code solve_interior(Patch& patch, const std::vector<Eigen::Vector2d>& border_uv,
                                    std::vector<double>& u, std::vector<double>& v)
   {
-    std::vector<double> bu(border_uv.size()), bv(border_uv.size()), rhs;
+    Eigen::MatrixXd values(static_cast<Eigen::Index>(border_uv.size()), 2), rhs, x;
     for(std::size_t k = 0; k < border_uv.size(); ++k)
-    {
-      bu[k] = border_uv[k].x();
-      bv[k] = border_uv[k].y();
-    }
-    patch.interior_rhs_from_border(bu, rhs);
-    Error_code status = patch.solve_interior(rhs, u);
+      values.row(static_cast<Eigen::Index>(k)) = border_uv[k].transpose();
+    patch.interior_rhs_from_border(values, rhs);
+    const Error_code status = patch.solve_interior(rhs, x);
     if(status != OK)
       return status;
-    patch.interior_rhs_from_border(bv, rhs);
-    return patch.solve_interior(rhs, v);
+    u.assign(x.col(0).data(), x.col(0).data() + x.rows());
+    v.assign(x.col(1).data(), x.col(1).data() + x.rows());
+    return OK;
   }
 
   // The repair of BLEND_TOWARD_CIRCLE: replaces border_uv, u, v by the kept candidate, or
@@ -362,9 +455,9 @@ private:
     const bool mean_value_ok = (mvc.factor(patch) == OK) && search(true, mean_value);
     if(!conformal_ok && !mean_value_ok)
       return ERROR_NO_1_TO_1_MAPPING;
+    const internal::Angle_distortion_objective angle_distortion(patch);
     const bool use_mean_value =
-      mean_value_ok && (!conformal_ok || internal::angle_distortion(patch, mean_value.uv) <
-                                         internal::angle_distortion(patch, conformal.uv));
+      mean_value_ok && (!conformal_ok || angle_distortion(mean_value.uv) < angle_distortion(conformal.uv));
     const Candidate& kept = use_mean_value ? mean_value : conformal;
     border_uv = kept.border_uv;
     u = kept.u;
@@ -375,9 +468,202 @@ private:
     return OK;
   }
 
+  // AUTOMATIC_BORDER: the valid member of lowest angle distortion, or ERROR_NO_1_TO_1_MAPPING.
+  Error_code choose_border(Patch& patch, std::vector<Eigen::Vector2d>& border_uv,
+                           std::vector<double>& u, std::vector<double>& v, Report& report) const
+  {
+    const typename Border_parameterizer::Record& record = m_border.last_record();
+    const int center = patch.index(record.center);
+    if(center < 0)
+      return ERROR_WRONG_PARAMETER;
+
+    // the second measured border's radii, computed in a second thread while the first
+    // borders are evaluated (they do not need it)
+    std::vector<double> second(patch.border().size());
+    report.second_border_is_poisson = internal::Is_fast_marching_border<Border_distance>::value;
+    auto second_radii = [&patch, &second, center, poisson = report.second_border_is_poisson]() {
+      std::vector<double> values;
+      const Error_code status =
+        poisson ? patch.solve_spring_poisson(static_cast<std::size_t>(center), 1., values)
+                : internal::geodesic_distances<Fast_marching_geodesics>(patch, std::vector<int>(1, center), values);
+      if(status == OK)
+        for(std::size_t k = 0; k < second.size(); ++k)
+          second[k] = values[static_cast<std::size_t>(patch.border()[k])];
+      return status;
+    };
+    std::future<Error_code> second_ready = std::async(m_border.uses_concurrency() ? std::launch::async
+                                                                                   : std::launch::deferred,
+                                                      second_radii);
+
+    const std::vector<double> circle = internal::arc_length_angles(patch);
+    const internal::Angle_distortion_objective angle_distortion(patch);
+    const std::vector<double>* radii[3] = {nullptr, &record.border_distances, &second};
+
+    struct Solution
+    {
+      std::vector<Eigen::Vector2d> border_uv;
+      std::vector<double> u, v;
+    };
+    Solution best;
+    double best_objective = std::numeric_limits<double>::infinity();
+
+    // evaluates a batch of borders with one multi-column solve; returns their objectives
+    auto evaluate = [&](const std::vector<std::pair<Border_family, double> >& batch) {
+      // validity and angle distortion of each candidate; two threads share the candidates
+      struct Evaluation
+      {
+        Solution solution;
+        bool valid = false;
+        double objective = std::numeric_limits<double>::infinity();
+      };
+      std::vector<internal::Polar_border> borders(batch.size());
+      std::vector<bool> placed(batch.size(), false);
+      const Eigen::Index m = static_cast<Eigen::Index>(patch.border().size());
+      Eigen::MatrixXd values(m, 2 * static_cast<Eigen::Index>(batch.size()));
+      values.setZero();
+      for(std::size_t i = 0; i < batch.size(); ++i)
+      {
+        const Border_family family = batch[i].first;
+        const double t = (family == CIRCLE) ? 1. : batch[i].second;
+        const std::vector<double>& r = (family == CIRCLE) ? record.border_distances : *radii[family];
+        placed[i] = internal::blended_border(record.border_angles, r, circle, t, borders[i]) == OK;
+        if(placed[i])
+          for(Eigen::Index k = 0; k < m; ++k)
+          {
+            values(k, 2 * static_cast<Eigen::Index>(i)) = borders[i].uv[static_cast<std::size_t>(k)].x();
+            values(k, 2 * static_cast<Eigen::Index>(i) + 1) = borders[i].uv[static_cast<std::size_t>(k)].y();
+          }
+      }
+      Eigen::MatrixXd rhs, x;
+      patch.interior_rhs_from_border(values, rhs);
+      const bool solved = patch.solve_interior(rhs, x) == OK;
+      std::vector<Evaluation> evaluations(batch.size());
+      auto evaluate_range = [&](std::size_t first, std::size_t last) {
+        for(std::size_t i = first; i < last; ++i)
+        {
+          if(!solved || !placed[i])
+            continue;
+          Evaluation& e = evaluations[i];
+          e.solution.border_uv = borders[i].uv;
+          const Eigen::Index column = 2 * static_cast<Eigen::Index>(i);
+          e.solution.u.assign(x.col(column).data(), x.col(column).data() + x.rows());
+          e.solution.v.assign(x.col(column + 1).data(), x.col(column + 1).data() + x.rows());
+          std::vector<Eigen::Vector2d> uv;
+          internal::assemble_uv(patch, e.solution.border_uv, e.solution.u, e.solution.v, uv);
+          e.valid = internal::is_one_to_one(patch, uv);
+          if(e.valid)
+            e.objective = angle_distortion(uv);
+        }
+      };
+      const std::size_t half = (batch.size() + 1) / 2;
+      {
+        std::future<void> other;
+        if(m_border.uses_concurrency() && batch.size() > 1)
+          other = std::async(std::launch::async, evaluate_range, half, batch.size());
+        evaluate_range(0, other.valid() ? half : batch.size());
+        if(other.valid())
+          other.get();
+      }
+      std::vector<double> objectives(batch.size());
+      for(std::size_t i = 0; i < batch.size(); ++i)
+      {
+        Evaluation& e = evaluations[i];
+        report.border_candidates.push_back(
+          Border_candidate{batch[i].first, (batch[i].first == CIRCLE) ? 1. : batch[i].second, e.valid, e.objective});
+        if(e.valid && e.objective < best_objective)
+        {
+          best_objective = e.objective;
+          best = std::move(e.solution);
+          report.chosen_candidate = static_cast<int>(report.border_candidates.size()) - 1;
+        }
+        objectives[i] = e.objective;
+      }
+      return objectives;
+    };
+
+    // the grid: the circle, and t = 0, 1/2 for both measured borders
+    std::vector<double> grid = evaluate({{CIRCLE, 1.}, {POLICY_BORDER, 0.}, {POLICY_BORDER, 0.5}});
+    // without the second border's distances (an unreachable vertex, say) the search goes on
+    // with the policy's border alone
+    const bool have_second = (second_ready.get() == OK);
+    if(have_second)
+    {
+      const std::vector<double> grid_second = evaluate({{SECOND_BORDER, 0.}, {SECOND_BORDER, 0.5}});
+      grid.insert(grid.end(), grid_second.begin(), grid_second.end());
+    }
+    // golden-section search of each family around its best grid point, both in one batch
+    struct Bracket
+    {
+      Border_family family;
+      double a, b, x1, x2, f1, f2;
+    };
+    const double ratio = 0.5 * (std::sqrt(5.) - 1.);
+    std::vector<Bracket> brackets;
+    for(const Border_family family : {POLICY_BORDER, SECOND_BORDER})
+    {
+      if(family == SECOND_BORDER && !have_second)
+        continue;
+      const std::size_t first = (family == POLICY_BORDER) ? 1 : 3;
+      const double f[3] = {grid[first], grid[first + 1], grid[0]};  // t = 0, 1/2, 1
+      const int i = (f[1] <= f[0] && f[1] <= f[2]) ? 1 : (f[0] <= f[2] ? 0 : 2);
+      const double a = (std::max)(0., 0.5 * i - 0.5), b = (std::min)(1., 0.5 * i + 0.5);
+      brackets.push_back({family, a, b, b - ratio * (b - a), a + ratio * (b - a), 0., 0.});
+    }
+    {
+      std::vector<std::pair<Border_family, double> > batch;
+      for(const Bracket& br : brackets)
+      {
+        batch.emplace_back(br.family, br.x1);
+        batch.emplace_back(br.family, br.x2);
+      }
+      const std::vector<double> f = evaluate(batch);
+      for(std::size_t j = 0; j < brackets.size(); ++j)
+      {
+        brackets[j].f1 = f[2 * j];
+        brackets[j].f2 = f[2 * j + 1];
+      }
+    }
+    for(int step = 0; step < 2; ++step)
+    {
+      std::vector<std::pair<Border_family, double> > batch;
+      std::vector<bool> new_is_x1;
+      for(Bracket& br : brackets)
+      {
+        new_is_x1.push_back(br.f1 <= br.f2);
+        if(new_is_x1.back())  // the minimum is in [a, x2]
+        {
+          br.b = br.x2;
+          br.x2 = br.x1;
+          br.f2 = br.f1;
+          br.x1 = br.b - ratio * (br.b - br.a);
+          batch.emplace_back(br.family, br.x1);
+        }
+        else  // in [x1, b]
+        {
+          br.a = br.x1;
+          br.x1 = br.x2;
+          br.f1 = br.f2;
+          br.x2 = br.a + ratio * (br.b - br.a);
+          batch.emplace_back(br.family, br.x2);
+        }
+      }
+      const std::vector<double> f = evaluate(batch);
+      for(std::size_t j = 0; j < brackets.size(); ++j)
+        (new_is_x1[j] ? brackets[j].f1 : brackets[j].f2) = f[j];
+    }
+
+    if(report.chosen_candidate < 0)
+      return ERROR_NO_1_TO_1_MAPPING;
+    border_uv = std::move(best.border_uv);
+    u = std::move(best.u);
+    v = std::move(best.v);
+    return OK;
+  }
+
   Border_parameterizer m_border;
   std::shared_ptr<Report> m_report;
   Repair m_repair = BLEND_TOWARD_CIRCLE;
+  Border_choice m_border_choice = MEASURED_BORDER;
 };
 
 } // namespace Surface_mesh_parameterization

@@ -280,25 +280,33 @@ public:
     return m_interior_system->solve(b, x);
   }
 
+  /// solves `L_II X = B` for every column of `B` (`interior_vertices().size()` rows), with one
+  /// pass over the factorization for all columns when the solver allows it.
+  Error_code solve_interior(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
+  {
+    const Error_code status = factorize_interior_laplacian();
+    if(status != OK)
+      return status;
+    return m_interior_system->solve(B, X);
+  }
+
   /// right-hand side of the interior Dirichlet problem for border values `border_values`
   /// (one per `border()` entry): `b_i = sum_{j in border} w_ij border_values_j`.
   void interior_rhs_from_border(const std::vector<double>& border_values,
                                 std::vector<double>& b) const
   {
-    std::vector<double> value_at(m_vertices.size(), 0.);
-    for(std::size_t k = 0; k < m_border.size(); ++k)
-      value_at[static_cast<std::size_t>(m_border[k])] = border_values[k];
     b.assign(m_interior.size(), 0.);
-    for(std::size_t f = 0; f < m_faces.size(); ++f)
-      for(int k = 0; k < 3; ++k)
-      {
-        const std::size_t a = static_cast<std::size_t>(m_faces[f][(k + 1) % 3]);
-        const std::size_t c = static_cast<std::size_t>(m_faces[f][(k + 2) % 3]);
-        const double w = m_half_cot[f][static_cast<std::size_t>(k)];
-        const int ia = m_interior_index[a], ic = m_interior_index[c];
-        if(ia >= 0 && ic < 0) b[static_cast<std::size_t>(ia)] += w * value_at[c];
-        if(ic >= 0 && ia < 0) b[static_cast<std::size_t>(ic)] += w * value_at[a];
-      }
+    for(const Coupling& c : m_coupling)
+      b[static_cast<std::size_t>(c.row)] += c.weight * border_values[static_cast<std::size_t>(c.border_index)];
+  }
+
+  /// the same for several border functions at once: column `j` of `border_values` (one row
+  /// per `border()` entry) gives column `j` of `b`.
+  void interior_rhs_from_border(const Eigen::MatrixXd& border_values, Eigen::MatrixXd& b) const
+  {
+    b.setZero(static_cast<Eigen::Index>(m_interior.size()), border_values.cols());
+    for(const Coupling& c : m_coupling)
+      b.row(c.row) += c.weight * border_values.row(c.border_index);
   }
 
   /// assembles and factorizes, unless it already is for this `exponent`, the spring
@@ -428,6 +436,7 @@ private:
     m_cot_row_sums.clear();
     m_mean_spoke.clear();
     m_pattern = internal::Laplacian_pattern();
+    m_coupling.clear();
     m_spring_row_sums.clear();
     m_border_loops = 0;
     m_loops.clear();
@@ -680,6 +689,24 @@ private:
                                  internal::Cotangent_weight{&m_half_cot}, m_cot_row_sums);
     internal::mean_spoke_lengths(m_faces, m_points, m_single_edges, m_mean_spoke);
     m_pattern = internal::Laplacian_pattern(m_vertices.size(), m_faces);
+    // the cotangent weights between interior vertices and the main border loop
+    if(!m_border.empty())
+    {
+      std::vector<int> position(m_vertices.size(), -1);
+      for(std::size_t k = 0; k < m_border.size(); ++k)
+        position[static_cast<std::size_t>(m_border[k])] = static_cast<int>(k);
+      for(std::size_t f = 0; f < m_faces.size(); ++f)
+        for(int k = 0; k < 3; ++k)
+        {
+          const std::size_t a = static_cast<std::size_t>(m_faces[f][(k + 1) % 3]);
+          const std::size_t c = static_cast<std::size_t>(m_faces[f][(k + 2) % 3]);
+          const double w = m_half_cot[f][static_cast<std::size_t>(k)];
+          if(m_interior_index[a] >= 0 && position[c] >= 0)
+            m_coupling.push_back({m_interior_index[a], position[c], w});
+          if(m_interior_index[c] >= 0 && position[a] >= 0)
+            m_coupling.push_back({m_interior_index[c], position[a], w});
+        }
+    }
     return OK;
   }
 
@@ -703,6 +730,13 @@ private:
   std::vector<double> m_cot_row_sums;
   std::vector<double> m_mean_spoke;
   internal::Laplacian_pattern m_pattern;
+  struct Coupling
+  {
+    int row;           // interior row
+    int border_index;  // position in m_border
+    double weight;
+  };
+  std::vector<Coupling> m_coupling;
   std::unique_ptr<System> m_interior_system;
   std::unique_ptr<System> m_spring_system;
   std::vector<double> m_spring_row_sums;

@@ -10,9 +10,13 @@
 /// Tags that select the algorithm of `geodesic_distance_map()`, `Geodesic_center_locator`
 /// and `Geodesic_border_distance`.
 
-#include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
-
 namespace CGAL {
+
+namespace Heat_method_3 {
+struct Direct;  // the tags of CGAL's Heat_method_3 (Surface_mesh_geodesic_distances_3.h)
+struct Intrinsic_Delaunay;
+} // namespace Heat_method_3
+
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured

@@ -14,7 +14,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
-#include <CGAL/Surface_mesh_parameterization/internal/fast_marching.h>
+#include <CGAL/Surface_mesh_parameterization/internal/fast_marching_solver.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
@@ -40,19 +40,6 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-// Every value finite and >= 0 (sources at 0); the solvers' results are checked with it.
-inline Error_code check_distances(std::vector<double>& d)
-{
-  for(double& x : d)
-  {
-    if(!std::isfinite(x))
-      return ERROR_DISTANCE_COMPUTATION_FAILED;
-    if(x < 0.)
-      x = 0.;  // rounding in the heat method's normalisation
-  }
-  return OK;
-}
-
 // A Surface_mesh copy of the patch: vertex i is the patch's local vertex i.
 template <class Point_3>
 std::unique_ptr<CGAL::Surface_mesh<Point_3> > patch_surface_mesh(const std::vector<Eigen::Vector3d>& points,
@@ -71,30 +58,6 @@ std::unique_ptr<CGAL::Surface_mesh<Point_3> > patch_surface_mesh(const std::vect
                  typename SM::Vertex_index(static_cast<typename SM::size_type>(t[2])));
   return sm;
 }
-
-template <class Method>
-class Geodesic_solver;
-
-// ---------------------------------------------------------------- fast marching
-
-template <>
-class Geodesic_solver<Fast_marching_geodesics>
-{
-public:
-  template <class Patch>
-  explicit Geodesic_solver(const Patch& patch)
-    : m_fm(patch.points(), patch.faces_indices())
-  { }
-
-  Error_code compute(const std::vector<int>& sources, std::vector<double>& distances) const
-  {
-    m_fm.compute(sources, distances);
-    return check_distances(distances);
-  }
-
-private:
-  Fast_marching m_fm;
-};
 
 // ---------------------------------------------------------------- Dijkstra along edges
 
@@ -274,25 +237,6 @@ private:
   std::unique_ptr<Shortest_path> m_paths;
   std::vector<std::vector<int> > m_border_neighbors;
 };
-
-// The solver of `Method` shared by everything that works on `patch`.
-template <class Method, class Patch>
-Geodesic_solver<Method>& shared_geodesic_solver(Patch& patch)
-{
-  return patch.template shared_object<Geodesic_solver<Method> >();
-}
-
-// Distances from `sources` (local indices), one per patch vertex.
-template <class Method, class Patch>
-Error_code geodesic_distances(Patch& patch, const std::vector<int>& sources, std::vector<double>& distances)
-{
-  if(sources.empty())
-    return ERROR_WRONG_PARAMETER;
-  for(int s : sources)
-    if(s < 0 || static_cast<std::size_t>(s) >= patch.number_of_vertices())
-      return ERROR_WRONG_PARAMETER;
-  return shared_geodesic_solver<Method>(patch).compute(sources, distances);
-}
 
 } // namespace internal
 } // namespace Surface_mesh_parameterization

@@ -61,6 +61,49 @@ inline bool is_strictly_convex_clockwise(const std::vector<Eigen::Vector2d>& p)
   return true;
 }
 
+// Places border vertex k at radius radii[k] and polar angle -angles[k] (angles strictly
+// increasing in [0, 2 pi), radii positive), then scales uniformly and translates so that the
+// bounding box is centered in [0,1]^2 with its longest side spanning [0,1].
+inline Error_code place_polar_border(const std::vector<double>& angles, const std::vector<double>& radii,
+                                     Polar_border& out)
+{
+  const std::size_t m = angles.size();
+  if(radii.size() != m || m < 3)
+    return ERROR_WRONG_PARAMETER;
+  for(double r : radii)
+    if(!(r > 0.) || !std::isfinite(r))
+      return ERROR_DEGENERATE_BORDER_MAP;
+  for(std::size_t k = 0; k < m; ++k)
+  {
+    const double next = (k + 1 < m) ? angles[k + 1] : angles[0] + 2. * CGAL_PI;
+    if(!(next - angles[k] > min_angle_increment))
+      return ERROR_DEGENERATE_BORDER_MAP;
+  }
+  out.angles = angles;
+  out.uv.resize(m);
+  Eigen::Vector2d lo(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  for(std::size_t k = 0; k < m; ++k)
+  {
+    out.uv[k] = Eigen::Vector2d(radii[k] * std::cos(-angles[k]), radii[k] * std::sin(-angles[k]));
+    lo = lo.cwiseMin(out.uv[k]);
+    hi = hi.cwiseMax(out.uv[k]);
+  }
+  const double extent = (std::max)(hi.x() - lo.x(), hi.y() - lo.y());
+  if(!(extent > 0.) || !std::isfinite(extent))
+    return ERROR_DEGENERATE_BORDER_MAP;
+  const Eigen::Vector2d mid = 0.5 * (lo + hi);
+  out.scale = 1. / extent;
+  out.origin = Eigen::Vector2d(0.5, 0.5) - mid / extent;
+  for(Eigen::Vector2d& p : out.uv)
+  {
+    p = Eigen::Vector2d(0.5, 0.5) + (p - mid) / extent;
+    p = p.cwiseMax(Eigen::Vector2d(0., 0.)).cwiseMin(Eigen::Vector2d(1., 1.));  // rounding only
+  }
+  out.strictly_convex = is_strictly_convex_clockwise(out.uv);
+  return OK;
+}
+
 // For the loop b_0..b_{m-1} (patch.border()) around the center c:
 //   theta_k = angle in 3D between b_k - c and b_{k+1} - c,
 //   phi_k   = 2 pi (theta_0 + ... + theta_{k-1}) / (theta_0 + ... + theta_{m-1}),
@@ -93,37 +136,14 @@ Error_code polar_border_map(const Patch& patch, std::size_t center,
   for(double t : theta)  // same direction (or a zero vector): not strictly monotone
     if(!(2. * CGAL_PI * t / total > min_angle_increment))
       return ERROR_DEGENERATE_BORDER_MAP;
-  for(double r : radii)
-    if(!(r > 0.) || !std::isfinite(r))
-      return ERROR_DEGENERATE_BORDER_MAP;
-
-  out.angles.resize(m);
-  out.uv.resize(m);
+  std::vector<double> angles(m);
   double sum = 0.;
-  Eigen::Vector2d lo(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
-  Eigen::Vector2d hi = -lo;
   for(std::size_t k = 0; k < m; ++k)
   {
-    const double phi = 2. * CGAL_PI * sum / total;
+    angles[k] = 2. * CGAL_PI * sum / total;
     sum += theta[k];
-    out.angles[k] = phi;
-    out.uv[k] = Eigen::Vector2d(radii[k] * std::cos(-phi), radii[k] * std::sin(-phi));
-    lo = lo.cwiseMin(out.uv[k]);
-    hi = hi.cwiseMax(out.uv[k]);
   }
-  const double extent = (std::max)(hi.x() - lo.x(), hi.y() - lo.y());
-  if(!(extent > 0.) || !std::isfinite(extent))
-    return ERROR_DEGENERATE_BORDER_MAP;
-  const Eigen::Vector2d mid = 0.5 * (lo + hi);
-  out.scale = 1. / extent;
-  out.origin = Eigen::Vector2d(0.5, 0.5) - mid / extent;
-  for(Eigen::Vector2d& p : out.uv)
-  {
-    p = Eigen::Vector2d(0.5, 0.5) + (p - mid) / extent;
-    p = p.cwiseMax(Eigen::Vector2d(0., 0.)).cwiseMin(Eigen::Vector2d(1., 1.));  // rounding only
-  }
-  out.strictly_convex = is_strictly_convex_clockwise(out.uv);
-  return OK;
+  return place_polar_border(angles, radii, out);
 }
 
 } // namespace internal

@@ -7,9 +7,8 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_REPAIR_H
 
 // Validity of a parameterization of a patch, and what the repair needs (METHOD.md section 4):
-// the one-to-one test, the mean value coordinates interior solve (positive weights: with a
-// convex border the map is an embedding, by Floater's theorem), and the paper's angle
-// distortion, to choose between repairs.
+// the one-to-one test, and the mean value coordinates interior solve (positive weights: with
+// a convex border the map is an embedding, by Floater's theorem).
 //
 // The one-to-one test. Orient every border curve of the patch so that the faces are on its
 // left: the outer border counterclockwise, each hole clockwise. If every real face is
@@ -137,47 +136,6 @@ template <class Patch>
 bool is_one_to_one(const Patch& patch, const std::vector<Eigen::Vector2d>& uv)
 {
   return count_flips(patch, uv) == 0 && border_curves_are_valid(patch, uv);
-}
-
-// The paper's angle distortion (measure_quality()'s `angle_distortion`) over the real faces.
-template <class Patch>
-double angle_distortion(const Patch& patch, const std::vector<Eigen::Vector2d>& uv)
-{
-  const std::size_t n = patch.number_of_real_vertices();
-  const std::vector<std::array<int, 3> >& faces = patch.faces_indices();
-  std::vector<bool> on_border(n, false);
-  for(int b : patch.border())
-    on_border[static_cast<std::size_t>(b)] = true;
-  for(const std::vector<int>& hole : patch.hole_loops())
-    for(int b : hole)
-      on_border[static_cast<std::size_t>(b)] = true;
-  auto angle3 = [&patch](int i, int j, int k) {
-    const Eigen::Vector3d a = patch.point(static_cast<std::size_t>(j)) - patch.point(static_cast<std::size_t>(i));
-    const Eigen::Vector3d b = patch.point(static_cast<std::size_t>(k)) - patch.point(static_cast<std::size_t>(i));
-    return std::atan2(a.cross(b).norm(), a.dot(b));
-  };
-  std::vector<double> sum(n, 0.);
-  for(std::size_t f = 0; f < patch.number_of_real_faces(); ++f)
-    for(int k = 0; k < 3; ++k)
-      sum[static_cast<std::size_t>(faces[f][static_cast<std::size_t>(k)])] +=
-        angle3(faces[f][static_cast<std::size_t>(k)], faces[f][static_cast<std::size_t>((k + 1) % 3)],
-               faces[f][static_cast<std::size_t>((k + 2) % 3)]);
-  double total = 0.;
-  for(std::size_t f = 0; f < patch.number_of_real_faces(); ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const int i = faces[f][static_cast<std::size_t>(k)];
-      const int j = faces[f][static_cast<std::size_t>((k + 1) % 3)], l = faces[f][static_cast<std::size_t>((k + 2) % 3)];
-      double phi = angle3(i, j, l);
-      if(!on_border[static_cast<std::size_t>(i)] && sum[static_cast<std::size_t>(i)] > 0.)
-        phi *= 2. * CGAL_PI / sum[static_cast<std::size_t>(i)];
-      const Eigen::Vector2d a = uv[static_cast<std::size_t>(j)] - uv[static_cast<std::size_t>(i)];
-      const Eigen::Vector2d b = uv[static_cast<std::size_t>(l)] - uv[static_cast<std::size_t>(i)];
-      const double alpha = std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
-      if(phi > 0.)
-        total += ((alpha - phi) / phi) * ((alpha - phi) / phi);
-    }
-  return (n > 0) ? total / double(n) : 0.;
 }
 
 // r_k(t) = (1 - t) r_k + t * mean(r): t = 0 keeps the measured radii, t = 1 puts every border

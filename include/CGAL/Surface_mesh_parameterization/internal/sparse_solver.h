@@ -14,12 +14,14 @@
 #include <CGAL/Default.h>
 #include <CGAL/Eigen_solver_traits.h>
 
+#include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <future>
 #include <memory>
 #include <type_traits>
 #include <utility>
@@ -85,6 +87,71 @@ struct Is_eigen_solver_traits : std::false_type {};
 template <class Traits>
 struct Is_eigen_solver_traits<Traits, std::void_t<typename Traits::Solver> >
   : std::is_base_of<CGAL::Eigen_solver_traits<typename Traits::Solver>, Traits> {};
+
+// Eigen's SimplicialLDLT, whose factor can be read for a blocked multi-column solve.
+template <class Solver>
+struct Is_simplicial_ldlt : std::false_type {};
+
+template <class MatrixType, int UpLo, class Ordering>
+struct Is_simplicial_ldlt<Eigen::SimplicialLDLT<MatrixType, UpLo, Ordering> > : std::true_type {};
+
+// Solves P^T L D L^T P X = B for all columns of B at once: every entry of L is read once for
+// all columns (Eigen's own dense-RHS solve runs one column after the other, reading the
+// whole factor each time). Rows of the work array are contiguous across columns.
+template <class LDLT>
+void ldlt_block_solve(const LDLT& solver, const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
+{
+  typedef Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Row_major;
+  const auto& L = solver.matrixL().nestedExpression();  // unit lower triangle, column-major
+  const Eigen::Index n = L.cols(), k = B.cols();
+  Row_major Y(n, k);
+  if(solver.permutationP().size() > 0)
+    Y = solver.permutationP() * B;
+  else
+    Y = B;
+  double* y = Y.data();
+  const int* outer = L.outerIndexPtr();
+  const int* inner = L.innerIndexPtr();
+  const double* value = L.valuePtr();
+  const int* nnz = L.innerNonZeroPtr();  // null when compressed
+  for(Eigen::Index j = 0; j < n; ++j)  // L Z = Y
+  {
+    const double* yj = y + j * k;
+    const int end = nnz ? outer[j] + nnz[j] : outer[j + 1];
+    for(int p = outer[j]; p < end; ++p)
+      if(inner[p] > j)
+      {
+        double* yi = y + static_cast<Eigen::Index>(inner[p]) * k;
+        const double l = value[p];
+        for(Eigen::Index c = 0; c < k; ++c)
+          yi[c] -= l * yj[c];
+      }
+  }
+  const auto& D = solver.vectorD();
+  for(Eigen::Index j = 0; j < n; ++j)  // D W = Z
+  {
+    const double d = 1. / D[j];
+    for(Eigen::Index c = 0; c < k; ++c)
+      y[j * k + c] *= d;
+  }
+  for(Eigen::Index j = n - 1; j >= 0; --j)  // L^T V = W
+  {
+    double* yj = y + j * k;
+    const int end = nnz ? outer[j] + nnz[j] : outer[j + 1];
+    for(int p = outer[j]; p < end; ++p)
+      if(inner[p] > j)
+      {
+        const double* yi = y + static_cast<Eigen::Index>(inner[p]) * k;
+        const double l = value[p];
+        for(Eigen::Index c = 0; c < k; ++c)
+          yj[c] -= l * yi[c];
+      }
+  }
+  if(solver.permutationPinv().size() > 0)
+    X = solver.permutationPinv() * Y;
+  else
+    X = Y;
+}
 
 // Counters of the numerical work, to check and report reuse of factorizations.
 struct Solver_statistics
@@ -174,6 +241,61 @@ public:
       x[static_cast<std::size_t>(i)] = xi;
     }
     return OK;
+  }
+
+  // Solves A X = B for every column of B (n x k): with CGAL's Eigen_solver_traits in one
+  // pass over the factor, otherwise column by column. Counts k back-substitutions.
+  Error_code solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
+  {
+    typedef std::chrono::steady_clock Clock;
+    if(!m_factorized || B.rows() != m_n)
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+    const Clock::time_point start = Clock::now();
+    bool ok = true;
+    if constexpr(Is_eigen_solver_traits<Solver_traits>::value)
+    {
+      if constexpr(Is_simplicial_ldlt<typename Solver_traits::Solver>::value)
+      {
+        // many columns: two threads, each with half of them (the factor is only read)
+        const Eigen::Index k = B.cols();
+        if(k >= 4 && m_n >= 10000)
+        {
+          const Eigen::Index half = k / 2;
+          Eigen::MatrixXd X2;
+          const Eigen::MatrixXd B1 = B.leftCols(half), B2 = B.rightCols(k - half);
+          std::future<void> other = std::async(std::launch::async, [&] {
+            ldlt_block_solve(m_traits.solver(), B2, X2);
+          });
+          Eigen::MatrixXd X1;
+          ldlt_block_solve(m_traits.solver(), B1, X1);
+          other.get();
+          X.resize(B.rows(), k);
+          X.leftCols(half) = X1;
+          X.rightCols(k - half) = X2;
+        }
+        else
+          ldlt_block_solve(m_traits.solver(), B, X);
+      }
+      else
+        X = m_traits.solver().solve(B);
+      ok = (m_traits.solver().info() == Eigen::Success);
+    }
+    else
+    {
+      X.resize(B.rows(), B.cols());
+      Vector b(m_n), x(m_n);
+      for(Eigen::Index j = 0; j < B.cols() && ok; ++j)
+      {
+        for(int i = 0; i < m_n; ++i)
+          b[i] = B(i, j);
+        ok = m_traits.linear_solver(b, x);
+        for(int i = 0; i < m_n; ++i)
+          X(i, j) = x[i];
+      }
+    }
+    m_stats.back_substitution_seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    m_stats.back_substitutions += static_cast<int>(B.cols());
+    return (ok && X.allFinite()) ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   }
 
 private:
