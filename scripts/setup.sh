@@ -15,6 +15,9 @@ packages=(
   libboost-dev libboost-graph-dev libboost-test-dev
   libsuitesparse-dev     # CHOLMOD's supernodal Cholesky (optional solver)
   libopenblas-dev        # a multithreaded BLAS for CHOLMOD
+  clang libclang-rt-14-dev  # the libFuzzer target and the sanitizer build (clang 14)
+  doxygen                # the HTML reference manual (doc/)
+  librsvg2-bin           # rsvg-convert: the manual's SVG figures to PNG
 )
 
 missing=()
