@@ -37,6 +37,9 @@ namespace Surface_mesh_parameterization {
 /// \tparam VertexRange a range of `vertex_descriptor`.
 /// \tparam VertexDistanceMap a model of `WritablePropertyMap` with `vertex_descriptor` as
 ///         key and a floating point type as value.
+/// \param tm the triangle mesh.
+/// \param sources the source vertices (distance 0).
+/// \param distance_map receives the distance of every vertex of a component holding a source.
 /// \param np optional named parameter `vertex_point_map`.
 /// \return `OK`; `ERROR_WRONG_PARAMETER` (no source), `ERROR_EMPTY_MESH`,
 ///         `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NON_FINITE_COORDINATES`,

@@ -264,6 +264,9 @@ Parameterization_quality measure_quality(const TriangleMesh& tm,
 /// \tparam FaceRange a range of `face_descriptor`.
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` from `vertex_descriptor` to a 2D
 ///         point type with `x()` and `y()`.
+/// \param tm the triangle mesh.
+/// \param face_range the faces measured.
+/// \param uvmap the UV of every vertex of these faces.
 /// \param np optional named parameter `vertex_point_map`.
 template <class TriangleMesh, class FaceRange, class VertexUVMap,
           class NamedParameters = parameters::Default_named_parameters>
