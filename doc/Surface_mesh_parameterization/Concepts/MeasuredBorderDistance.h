@@ -11,7 +11,12 @@ Every distance must be a positive finite number. A model that cannot measure som
 vertex (for example a straightest geodesic that does not reach it) returns
 `ERROR_DISTANCE_COMPUTATION_FAILED` instead of a wrong value.
 
+A model may also have the optional operation `prepare()` (see below): the
+parameterizers detect it and run it in a second thread while the center is located.
+
 \cgalHasModel `CGAL::Surface_mesh_parameterization::Poisson_border_distance<TriangleMesh>`
+\cgalHasModel `CGAL::Surface_mesh_parameterization::Geodesic_border_distance<TriangleMesh, Method>`
+\cgalHasModel `CGAL::Surface_mesh_parameterization::Straightest_geodesic_border_distance<TriangleMesh>`
 
 \sa `MeasuredCenterLocator`
 \sa `CGAL::Surface_mesh_parameterization::Measured_border_parameterizer_3`
@@ -39,6 +44,17 @@ public:
   template <class Patch>
   Error_code compute_border_distances(Patch& patch, std::size_t center,
                                       std::vector<double>& distances) const;
+
+  /// optional: the work that does not depend on the center (for example factorizing a
+  /// matrix), run concurrently with the center search when the parameterizer's
+  /// `use_concurrency()` is on (the default), otherwise before it. A model without this
+  /// member does all its work in `compute_border_distances()`.
+  ///
+  /// \tparam Patch an instance of `CGAL::Surface_mesh_parameterization::Parameterization_patch_3`.
+  /// \return `OK` on success, otherwise an `Error_code` saying why; the parameterizer then
+  ///         fails with it.
+  template <class Patch>
+  Error_code prepare(Patch& patch) const;
 
   /// @}
 };

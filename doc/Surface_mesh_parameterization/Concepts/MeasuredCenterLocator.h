@@ -14,6 +14,7 @@ The center must be an interior vertex of the patch (not on its border loop). The
 must be deterministic: the same mesh gives the same center.
 
 \cgalHasModel `CGAL::Surface_mesh_parameterization::Poisson_center_locator<TriangleMesh>`
+\cgalHasModel `CGAL::Surface_mesh_parameterization::Geodesic_center_locator<TriangleMesh, Method>`
 \cgalHasModel `CGAL::Surface_mesh_parameterization::Fixed_center<TriangleMesh>`
 
 \sa `MeasuredBorderDistance`
