@@ -1,4 +1,4 @@
-# cmake -DDOXYGEN=... -DDOXYFILE=... -DOUTPUT_DIR=... -P run_doxygen.cmake
+# cmake -DDOXYGEN=... -DDOXYFILE=... -DOUTPUT_DIR=... [-DFIG_DIR=...] -P run_doxygen.cmake
 #
 # Builds the HTML manual and fails when Doxygen fails or writes any warning to its log.
 
@@ -30,5 +30,10 @@ if(NOT status EQUAL 0 OR NOT warnings STREQUAL "" OR NOT errors STREQUAL "")
 endif()
 if(NOT EXISTS "${OUTPUT_DIR}/html/index.html")
   message(FATAL_ERROR "Doxygen wrote no ${OUTPUT_DIR}/html/index.html")
+endif()
+# The manual's pictures (doc/Surface_mesh_parameterization/fig, made by
+# scripts/make_figures.sh): the manual links them as fig/NAME, relative to the page.
+if(FIG_DIR AND IS_DIRECTORY "${FIG_DIR}")
+  file(COPY "${FIG_DIR}" DESTINATION "${OUTPUT_DIR}/html")
 endif()
 message(STATUS "Doxygen: ${OUTPUT_DIR}/html/index.html, no warnings")
