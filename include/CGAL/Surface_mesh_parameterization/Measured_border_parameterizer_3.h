@@ -111,6 +111,7 @@ class Measured_border_parameterizer_3
 public:
   /// Triangle mesh type
   typedef TriangleMesh_                                                          Triangle_mesh;
+  /// Triangle mesh type (CGAL's name in its border parameterizers)
   typedef TriangleMesh_                                                          TriangleMesh;
   /// Center locator type
   typedef typename Default::Get<CenterLocator_,
@@ -123,7 +124,9 @@ public:
   /// The patch type the policies work on
   typedef Parameterization_patch_3<TriangleMesh_, Solver_traits>                 Patch;
 
+  /// Vertex type of the mesh
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor         vertex_descriptor;
+  /// Halfedge type of the mesh
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor       halfedge_descriptor;
 
   /// What the last call computed.
@@ -150,8 +153,10 @@ public:
     bool strictly_convex = false;
     /// factorizations and back-substitutions done by the call
     typename Patch::Statistics statistics;
+    ///@{
     /// wall-clock seconds of step 1 (center), step 2 (distances) and step 3 (polar map)
     double center_seconds = 0., distance_seconds = 0., border_map_seconds = 0.;
+    ///@}
   };
 
   /// creates a border parameterizer with the given policies.

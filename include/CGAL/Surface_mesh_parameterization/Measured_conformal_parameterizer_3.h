@@ -104,16 +104,24 @@ template <class TriangleMesh_,
 class Measured_conformal_parameterizer_3
 {
 public:
+  /// Triangle mesh type
   typedef TriangleMesh_                                                         Triangle_mesh;
+  /// Triangle mesh type (CGAL's name in its parameterizers)
   typedef TriangleMesh_                                                         TriangleMesh;
   /// The border step, which also holds the policies.
   typedef Measured_border_parameterizer_3<TriangleMesh_, CenterLocator_,
                                           BorderDistance_, SolverTraits_>       Border_parameterizer;
+  /// Center locator type (`CenterLocator_`, or the default)
   typedef typename Border_parameterizer::Center_locator                         Center_locator;
+  /// Border distance type (`BorderDistance_`, or the default)
   typedef typename Border_parameterizer::Border_distance                        Border_distance;
+  /// Solver traits type (`SolverTraits_`, or the default)
   typedef typename Border_parameterizer::Solver_traits                          Solver_traits;
+  /// The patch type the policies work on
   typedef typename Border_parameterizer::Patch                                  Patch;
+  /// Vertex type of the mesh
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor        vertex_descriptor;
+  /// Halfedge type of the mesh
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor      halfedge_descriptor;
 
   /// What to do when the measured parameterization is not one-to-one.
@@ -158,6 +166,7 @@ public:
   /// A border tried by `AUTOMATIC_BORDER`.
   struct Border_candidate
   {
+    /// which member of the family
     Border_family family;
     /// the blend toward the circle (1 for the circle)
     double blend;
@@ -172,8 +181,10 @@ public:
   {
     /// status of the last call
     Error_code status = ERROR_WRONG_PARAMETER;
+    ///@{
     /// number of vertices and faces of the parameterized component
     std::size_t vertices = 0, faces = 0;
+    ///@}
     /// input checks and indexing of the component
     double preparation_seconds = 0.;
     /// step 1: factorizing L_II and locating the center (the border distance policy's
@@ -206,9 +217,10 @@ public:
     int repair_candidates = 0;
     /// time of the repair (validity check included)
     double repair_seconds = 0.;
-    /// `AUTOMATIC_BORDER`: every border tried, in the order tried, and the index of the kept
-    /// one (-1 when none was valid and the measured border was repaired instead)
+    /// `AUTOMATIC_BORDER`: every border tried, in the order tried
     std::vector<Border_candidate> border_candidates;
+    /// `AUTOMATIC_BORDER`: the index of the kept border in `border_candidates` (-1 when none
+    /// was valid and the measured border was repaired instead)
     int chosen_candidate = -1;
     /// `AUTOMATIC_BORDER`: whether the second measured border is the Poisson distance map
     /// (rather than fast marching geodesics)

@@ -78,8 +78,11 @@ public:
   typedef TriangleMesh                                                          Triangle_mesh;
   /// The solver traits type.
   typedef typename internal::Get_solver_traits<SolverTraits>::type              Solver_traits;
+  /// Vertex type of the mesh.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor         vertex_descriptor;
+  /// Halfedge type of the mesh.
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor       halfedge_descriptor;
+  /// Face type of the mesh.
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor           face_descriptor;
   /// Three local vertex indices, in the mesh's face orientation.
   typedef internal::Face_indices                                                Face;

@@ -43,6 +43,7 @@ template <class TriangleMesh>
 class Straightest_geodesic_border_distance
 {
 public:
+  /// Vertex type of the mesh.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
 
   /// What the last call could not do.
