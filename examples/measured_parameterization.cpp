@@ -4,8 +4,8 @@
 //
 //   measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]
 //                             [--center=poisson|geodesic[:METHOD]|vertex:N]
-//                             [--distance=poisson|METHOD|straightest] [--solver=cholmod|ldlt]
-//                             [--svg=FILE] [--json] [--no-repair] [--help]
+//                             [--distance=poisson|METHOD|straightest] [--border=measured|auto]
+//                             [--solver=cholmod|ldlt] [--svg=FILE] [--json] [--no-repair] [--help]
 //
 // Reads OFF, OBJ, PLY or STL (default: a real mesh of the project's data, or a generated
 // curved disk when that file is missing), maps the longest border, and writes an OBJ with
@@ -203,6 +203,18 @@ struct Parameterization_result
   bool repaired = false, mean_value_interior = false;
   double blend = 0., repair_seconds = 0.;
   int repair_candidates = 0;
+  // --border=auto: the borders tried, in order, and the kept one (-1: none was valid, the
+  // measured border was repaired)
+  struct Candidate
+  {
+    std::string kind;  // circle, or measured:<distance> blended toward the circle
+    double blend = 0.;
+    bool valid = false;
+    double angle_distortion = 0.;
+  };
+  std::vector<Candidate> border_candidates;
+  int chosen_candidate = -1;
+  double search_seconds = 0.;
 };
 
 // A parameterized mesh in the numbering of the output files, the same for a mesh and for a
@@ -227,15 +239,17 @@ Parameterization_result run_parameterization(const TriangleMesh& tm,
                                              typename boost::graph_traits<TriangleMesh>::halfedge_descriptor bhd,
                                              const Command_line_center_locator<TriangleMesh>& locator,
                                              const Command_line_border_distance<TriangleMesh>& distance,
-                                             bool repair, UVMap uvmap, FlagMap parameterized,
+                                             const mbp_cli::Options& options, UVMap uvmap, FlagMap parameterized,
                                              std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& border)
 {
   typedef SMP::Measured_conformal_parameterizer_3<TriangleMesh, Command_line_center_locator<TriangleMesh>,
                                                   Command_line_border_distance<TriangleMesh>,
                                                   SolverTraits>                   Parameterizer;
   Parameterizer parameterizer(locator, distance);
-  if(!repair)
+  if(!options.repair)
     parameterizer.set_repair(Parameterizer::NO_REPAIR);
+  if(options.auto_border)
+    parameterizer.set_border_choice(Parameterizer::AUTOMATIC_BORDER);
   Parameterization_result r;
   // the vertex index map is not used by the parameterizer (it indexes the component itself)
   r.status = parameterizer.parameterize(tm, bhd, uvmap, get(CGAL::dynamic_vertex_property_t<int>(), tm),
@@ -269,6 +283,20 @@ Parameterization_result run_parameterization(const TriangleMesh& tm,
   r.blend = report.blend;
   r.repair_seconds = report.repair_seconds;
   r.repair_candidates = report.repair_candidates;
+  const std::string second = report.second_border_is_poisson ? "poisson" : "fast-marching";
+  for(const typename Parameterizer::Border_candidate& c : report.border_candidates)
+  {
+    Parameterization_result::Candidate k;
+    k.kind = (c.family == Parameterizer::CIRCLE)          ? std::string("circle")
+             : (c.family == Parameterizer::POLICY_BORDER) ? "measured:" + options.distance
+                                                          : "measured:" + second;
+    k.blend = c.blend;
+    k.valid = c.valid;
+    k.angle_distortion = c.objective;
+    r.border_candidates.push_back(k);
+  }
+  r.chosen_candidate = report.chosen_candidate;
+  r.search_seconds = report.search_seconds;
   return r;
 }
 
@@ -338,11 +366,11 @@ mbp_cli::Failure parameterize_mesh(const TriangleMesh& tm, const Mesh& mesh, con
   std::vector<tm_vertex_descriptor> border;
 #ifdef MBP_WITH_CHOLMOD
   if(options.solver == mbp_cli::Solver::cholmod)
-    result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(tm, bhd, locator, distance, options.repair,
+    result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(tm, bhd, locator, distance, options,
                                                                            uvmap, parameterized, border);
   else
 #endif
-    result = run_parameterization<CGAL::Default>(tm, bhd, locator, distance, options.repair, uvmap, parameterized,
+    result = run_parameterization<CGAL::Default>(tm, bhd, locator, distance, options, uvmap, parameterized,
                                                  border);
 
   if(result.status != SMP::OK)
@@ -430,6 +458,17 @@ mbp_cli::Failure parameterize_mesh(const TriangleMesh& tm, const Mesh& mesh, con
     layout.face_quality.push_back(get(face_quality, fd));
   layout.quality_seconds = seconds_since(start);
   return mbp_cli::Failure();
+}
+
+// The border --border=auto kept, for the summary: "measured:poisson t 0.38 (9 borders tried)".
+std::string auto_border_summary(const Parameterization_result& result)
+{
+  const std::string tried = " (" + std::to_string(result.border_candidates.size()) + " borders tried)";
+  if(result.chosen_candidate < 0)
+    return "no valid member, measured border repaired" + tried;
+  const Parameterization_result::Candidate& c =
+    result.border_candidates[static_cast<std::size_t>(result.chosen_candidate)];
+  return c.kind + (c.kind == "circle" ? std::string() : " t " + mbp_cli::rounded(c.blend, 3)) + tried;
 }
 
 // A line of text for a comment of the OBJ file: no line breaks or other control characters.
@@ -574,6 +613,8 @@ int main(int argc, char** argv)
   obj.reserve(96 * layout.vertices.size() + 48 * layout.uv.size() + 48 * layout.faces.size());
   obj += "# UV layout by measured_parameterization: measured boundary parameterization (center: " +
          options.center_name() + ", border distances: " + options.distance + "), discrete conformal interior\n";
+  if(options.auto_border)
+    obj += "# border: --border=auto, " + auto_border_summary(result) + "\n";
   obj += "# input: " + one_line(generated ? mesh_name : options.input) + "\n";
   if(with_seams)
     obj += "# cut along " + std::to_string(seams.size()) + " seam edges (" + one_line(options.seams) +
@@ -667,6 +708,35 @@ int main(int argc, char** argv)
     j.member("solver", mbp_cli::solver_name(options.solver));
     j.member("center_locator", options.fixed_center ? std::string("vertex") : options.center);
     j.member("border_distance", options.distance);
+    j.begin_object("border_choice").member("mode", options.auto_border ? "auto" : "measured");
+    if(options.auto_border)
+    {
+      if(result.chosen_candidate >= 0)
+      {
+        const Parameterization_result::Candidate& c =
+          result.border_candidates[static_cast<std::size_t>(result.chosen_candidate)];
+        j.begin_object("chosen")
+           .member("index", result.chosen_candidate)
+           .member("kind", c.kind)
+           .member("blend", c.blend)
+           .member("center", center_index)
+           .member("angle_distortion", c.angle_distortion)
+           .end_object();
+      }
+      else
+        j.null_member("chosen");  // no valid member: the measured border, repaired
+      j.member("seconds", result.search_seconds);
+      j.begin_array("candidates", false);
+      for(const Parameterization_result::Candidate& c : result.border_candidates)
+        j.begin_object()
+           .member("kind", c.kind)
+           .member("blend", c.blend)
+           .member("valid", c.valid)
+           .member("angle_distortion", c.angle_distortion)  // null when not valid
+           .end_object();
+      j.end_array();
+    }
+    j.end_object();
     j.member("vertices", layout.vertices.size());
     j.member("faces", layout.faces.size());
     j.member("isolated_vertices", isolated);
@@ -690,6 +760,7 @@ int main(int argc, char** argv)
        .member("center", result.center_time)
        .member("distances", result.distances)
        .member("border_map", result.border_map)
+       .member("border_search", result.search_seconds)  // --border=auto (interior solves included)
        .member("interior", result.interior)
        .member("output", result.output)
        .member("total", result.total)
@@ -738,9 +809,12 @@ int main(int argc, char** argv)
               << " | border " << result.border_vertices << " vertices, length " << rounded(border_length)
               << " | center " << center_index << " (" << options.center_name() << ")"
               << " | distances " << options.distance
+              << (options.auto_border ? " | border auto: " + auto_border_summary(result) : std::string())
               << " | seconds: preparation " << rounded(result.preparation, 3) << ", center "
               << rounded(result.center_time, 3) << ", distances " << rounded(result.distances, 3)
-              << ", border map " << rounded(result.border_map, 3) << ", interior " << rounded(result.interior, 3)
+              << ", border map " << rounded(result.border_map, 3)
+              << (options.auto_border ? ", border search " + rounded(result.search_seconds, 3) : std::string())
+              << ", interior " << rounded(result.interior, 3)
               << ", total " << rounded(result.total, 3)
               << " | " << mbp_cli::solver_name(options.solver) << ": " << result.factorizations
               << " factorizations, " << result.back_substitutions << " back-substitutions"

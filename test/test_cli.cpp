@@ -508,6 +508,75 @@ BOOST_AUTO_TEST_CASE(geodesic_centers_and_distances)
     }
 }
 
+BOOST_AUTO_TEST_CASE(automatic_border)
+{
+  // --border=auto: every candidate is listed, the kept one is the valid candidate of lowest
+  // angle distortion, it is the layout written, and it is never worse than the circle or the
+  // pure measured borders (members of the family)
+  const std::string path = default_mesh_path();
+  Scratch scratch;
+  const Run r = scratch.run({path, "out.obj", "--json", "--border=auto"});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  const boost::property_tree::ptree j = parse_json(r.out);
+  BOOST_TEST(j.get<std::string>("border_choice.mode") == "auto");
+  const boost::property_tree::ptree& candidates = j.get_child("border_choice.candidates");
+  BOOST_TEST(candidates.size() >= 3u);
+  BOOST_TEST(candidates.size() <= 15u);
+  double best = std::numeric_limits<double>::infinity(), circle = -1., poisson = -1.;
+  int best_index = -1, index = 0;
+  for(const auto& c : candidates)
+  {
+    const std::string kind = c.second.get<std::string>("kind");
+    const double blend = c.second.get<double>("blend");
+    BOOST_TEST(blend >= 0.);
+    BOOST_TEST(blend <= 1.);
+    if(c.second.get<bool>("valid"))
+    {
+      const double d = c.second.get<double>("angle_distortion");
+      if(d < best)
+      {
+        best = d;
+        best_index = index;
+      }
+      if(kind == "circle")
+        circle = d;
+      if(kind == "measured:poisson" && blend == 0.)
+        poisson = d;
+    }
+    else
+      BOOST_TEST(c.second.get<std::string>("angle_distortion") == "null");
+    ++index;
+  }
+  BOOST_TEST(circle > 0.);   // the circle is always tried and valid (a convex border)
+  BOOST_TEST(poisson > 0.);  // the pure Poisson border of the default mesh is valid
+  BOOST_TEST(j.get<int>("border_choice.chosen.index") == best_index);
+  BOOST_TEST(j.get<double>("border_choice.chosen.angle_distortion") == best);
+  BOOST_TEST(j.get<std::size_t>("border_choice.chosen.center") == j.get<std::size_t>("center.index"));
+  BOOST_TEST(best <= circle);
+  BOOST_TEST(best <= poisson);
+  // the objective is the paper's angle distortion of the written layout
+  BOOST_TEST(std::abs(j.get<double>("quality.angle_distortion") - best) <= 1e-9 * best);
+  BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
+  // the measured default run gives the pure Poisson border's distortion
+  const Run m = scratch.run({path, "measured.obj", "--json"});
+  BOOST_REQUIRE_EQUAL(m.code, 0);
+  const boost::property_tree::ptree mj = parse_json(m.out);
+  BOOST_TEST(mj.get<std::string>("border_choice.mode") == "measured");
+  BOOST_TEST(std::abs(mj.get<double>("quality.angle_distortion") - poisson) <= 1e-9 * poisson);
+  // the summary names the kept border; the OBJ says how it was chosen
+  const Run t = scratch.run({path, "text.obj", "--border=auto"});
+  BOOST_REQUIRE_EQUAL(t.code, 0);
+  BOOST_TEST(contains(t.out, "| border auto: "));
+  BOOST_TEST(contains(t.out, std::to_string(candidates.size()) + " borders tried"));
+  BOOST_TEST(contains(Scratch::read_text(scratch.work / "text.obj"), "# border: --border=auto, "));
+  // a bad value is a usage error
+  Scratch bad;
+  const Run b = bad.run({path, "bad.obj", "--border=convex"});
+  BOOST_TEST(b.code == 2);
+  BOOST_TEST(contains(b.err, "--border"));
+  BOOST_TEST(bad.files().empty());
+}
+
 BOOST_AUTO_TEST_CASE(reads_off_obj_ply_and_stl)
 {
   Mesh mesh;
@@ -599,7 +668,7 @@ BOOST_AUTO_TEST_CASE(help)
   BOOST_TEST(r.code == 0);
   BOOST_TEST(contains(r.out, "usage: measured_parameterization"));
   for(const char* option : {"--center=vertex:N", "--distance=poisson", "--svg=FILE", "--json", "--solver", "_uv.obj",
-                            "--seams=FILE.selection.txt", "Seam_mesh"})
+                            "--seams=FILE.selection.txt", "Seam_mesh", "--border=auto"})
     BOOST_TEST(contains(r.out, option), option);
   BOOST_TEST(scratch.files().empty());
 }

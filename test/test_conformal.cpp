@@ -1,6 +1,6 @@
 // Measured_conformal_parameterizer_3: equality with CGAL's DCP plugged with the measured
 // border, the shared factorization (2 factorizations, 4 back-substitutions), the grounded
-// spring Laplacian, concurrency, solvers, generic meshes and bad input.
+// spring Laplacian, concurrency, solvers, generic meshes, bad input, and the automatic border.
 
 #define BOOST_TEST_MODULE conformal
 #include <boost/test/unit_test.hpp>
@@ -17,6 +17,8 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
+#include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
+#include <CGAL/Surface_mesh_parameterization/Geodesic_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/poisson_distance.h>
@@ -29,6 +31,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -326,4 +329,196 @@ BOOST_AUTO_TEST_CASE(bad_input_writes_nothing)
     for(vertex_descriptor v : vertices(m))
       BOOST_TEST(uv[v] == K::Point_2(-7, -7));
   }
+}
+
+// ---------------------------------------------------------------- the automatic border
+
+namespace {
+
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
+                                                SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics> >
+  Conformal_fm;
+
+// The angle distortion of the measured parameterization with `p` (no repair), or +infinity
+// when it is not one-to-one.
+template <class Parameterizer>
+double unrepaired_angle_distortion(Mesh& m, Parameterizer p, const std::string& name)
+{
+  UV_map uv = new_uv(m, name);
+  p.set_repair(Parameterizer::NO_REPAIR);
+  const SMP::Error_code status = SMP::parameterize(m, p, mbp_test::longest_border(m), uv);
+  BOOST_TEST((status == SMP::OK || status == SMP::ERROR_NO_1_TO_1_MAPPING), name << ": " << status);
+  return status == SMP::OK ? SMP::measure_quality(m, faces(m), uv).angle_distortion
+                           : std::numeric_limits<double>::infinity();
+}
+
+std::vector<std::string> automatic_border_meshes()
+{
+  if(mbp_test::mesh_set() == "shared")  // open patches, and nearly closed shapes where the circle wins
+    return {"matthew_nefertiti.off", "lilium.obj", "inspired_mesh.obj", "snail.obj", "venus.off", "lion-head.off",
+            "alligator.obj"};
+  return {"nefertiti.off", "mushroom.off", "patch-20.off"};
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(automatic_border_is_never_worse_than_its_members)
+{
+  for(const std::string& name : automatic_border_meshes())
+    BOOST_TEST_CONTEXT(name)
+    {
+      Mesh m = read(name);
+      UV_map uv = new_uv(m, "v:auto"), circle_uv = new_uv(m, "v:circle");
+      Conformal automatic;
+      automatic.set_border_choice(Conformal::AUTOMATIC_BORDER);
+      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv), SMP::OK);
+      const Conformal::Report& report = automatic.last_report();
+      const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
+      BOOST_TEST(q.flipped_faces == 0u);
+      BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+
+      // the references, computed independently: CGAL's DCP with its arc-length circle, and
+      // this package's Poisson and fast marching measured borders without repair
+      SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh>, LU> dcp;
+      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, mbp_test::longest_border(m), circle_uv), SMP::OK);
+      const double circle = SMP::measure_quality(m, faces(m), circle_uv).angle_distortion;
+      const double poisson = unrepaired_angle_distortion(m, Conformal(), "v:poisson");
+      const double geodesic = unrepaired_angle_distortion(m, Conformal_fm(), "v:fm");
+      BOOST_TEST_MESSAGE(name << ": auto " << q.angle_distortion << ", circle " << circle << ", Poisson " << poisson
+                              << ", fast marching " << geodesic << ", " << report.border_candidates.size()
+                              << " candidates");
+      const double slack = 1e-9 * circle;
+      BOOST_TEST(q.angle_distortion <= circle + slack);
+      BOOST_TEST(q.angle_distortion <= poisson + slack);
+      BOOST_TEST(q.angle_distortion <= geodesic + slack);
+
+      // the report: a bounded search, the circle and both pure measured borders among the
+      // candidates with the distortions computed above, the kept one the best valid one
+      BOOST_TEST(report.border_candidates.size() <= 15u);
+      BOOST_REQUIRE(report.chosen_candidate >= 0);
+      BOOST_TEST(!report.second_border_is_poisson);
+      int members = 0;
+      double best = std::numeric_limits<double>::infinity();
+      for(const Conformal::Border_candidate& c : report.border_candidates)
+      {
+        BOOST_TEST((c.valid == std::isfinite(c.objective)));
+        if(c.valid)
+          best = (std::min)(best, c.objective);
+        if(c.family == Conformal::CIRCLE)
+        {
+          ++members;
+          BOOST_TEST(c.valid);
+          BOOST_TEST(std::abs(c.objective - circle) <= 1e-7 * circle);
+        }
+        if(c.family == Conformal::POLICY_BORDER && c.blend == 0.)
+        {
+          ++members;
+          BOOST_TEST((c.valid ? std::abs(c.objective - poisson) <= 1e-7 * poisson : !std::isfinite(poisson)));
+        }
+        if(c.family == Conformal::SECOND_BORDER && c.blend == 0.)
+        {
+          ++members;
+          BOOST_TEST((c.valid ? std::abs(c.objective - geodesic) <= 1e-7 * geodesic : !std::isfinite(geodesic)));
+        }
+      }
+      BOOST_TEST(members == 3);
+      const Conformal::Border_candidate& kept =
+        report.border_candidates[static_cast<std::size_t>(report.chosen_candidate)];
+      BOOST_TEST(kept.objective == best);
+      BOOST_TEST(std::abs(kept.objective - q.angle_distortion) <= 1e-9 * q.angle_distortion);
+      BOOST_TEST(report.status == SMP::OK);
+      BOOST_TEST(!report.repaired);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(automatic_border_finds_the_flat_shape)
+{
+  // a flat disk whose border vertices are evenly spaced on a circle: the circle member is the
+  // exact shape (the cotangent Laplacian reproduces linear functions)
+  {
+    Mesh m = make(mbp_test::polar_disk(8, 32));
+    UV_map uv = new_uv(m, "v:uv");
+    Conformal automatic;
+    automatic.set_border_choice(Conformal::AUTOMATIC_BORDER);
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv), SMP::OK);
+    const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
+    BOOST_TEST(q.angle_distortion <= 1e-9);
+    BOOST_TEST(std::abs(q.l2_stretch - 1.) <= 1e-9);
+  }
+  // flat star-shaped disks that are not round (a generated ellipse; bump-domain.obj): with
+  // exact geodesic distances the measured border, a member, is the exact shape
+  std::vector<std::pair<std::string, Mesh> > meshes;
+  meshes.emplace_back("hex ellipse", make(mbp_test::hex_disk(10, 2., 1.)));
+  if(mbp_test::mesh_set() == "shared")
+    meshes.emplace_back("bump-domain.obj", read("bump-domain.obj"));
+  for(auto& named : meshes)
+    BOOST_TEST_CONTEXT(named.first)
+    {
+      Mesh& m = named.second;
+      UV_map uv = new_uv(m, "v:uv");
+      SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Geodesic_center_locator<Mesh, SMP::Exact_geodesics>,
+                                              SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics> > automatic;
+      automatic.set_border_choice(decltype(automatic)::AUTOMATIC_BORDER);
+      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv), SMP::OK);
+      const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
+      BOOST_TEST(q.angle_distortion <= 1e-9);
+      BOOST_TEST(q.area_distortion_max <= 1e-9);
+      BOOST_TEST(std::abs(q.l2_stretch - 1.) <= 1e-9);
+      const auto& report = automatic.last_report();
+      BOOST_REQUIRE(report.chosen_candidate >= 0);
+      const auto& kept = report.border_candidates[static_cast<std::size_t>(report.chosen_candidate)];
+      BOOST_TEST(kept.family == decltype(automatic)::POLICY_BORDER);
+      BOOST_TEST(kept.blend == 0.);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(automatic_border_is_deterministic)
+{
+  const std::string name = automatic_border_meshes()[1];
+  Mesh m = read(name);
+  UV_map a = new_uv(m, "v:a"), b = new_uv(m, "v:b"), c = new_uv(m, "v:c");
+  Conformal first, second, sequential;
+  for(Conformal* p : {&first, &second, &sequential})
+    p->set_border_choice(Conformal::AUTOMATIC_BORDER);
+  sequential.use_concurrency(false);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, first, mbp_test::longest_border(m), a), SMP::OK);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, second, mbp_test::longest_border(m), b), SMP::OK);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, sequential, mbp_test::longest_border(m), c), SMP::OK);
+  BOOST_TEST(relative_difference(m, a, b) == 0.);
+  BOOST_TEST(relative_difference(m, a, c) == 0.);
+  for(const Conformal* p : {&second, &sequential})
+  {
+    const auto& x = first.last_report().border_candidates;
+    const auto& y = p->last_report().border_candidates;
+    BOOST_REQUIRE_EQUAL(x.size(), y.size());
+    for(std::size_t i = 0; i < x.size(); ++i)
+    {
+      BOOST_TEST(x[i].family == y[i].family);
+      BOOST_TEST(x[i].blend == y[i].blend);
+      BOOST_TEST(x[i].valid == y[i].valid);
+      BOOST_TEST(((x[i].objective == y[i].objective) || (!x[i].valid && !y[i].valid)));
+    }
+    BOOST_TEST(first.last_report().chosen_candidate == p->last_report().chosen_candidate);
+  }
+
+  // the same choice through Polyhedron_3
+  Poly poly;
+  mbp_test::read_mesh(mbp_test::require_mesh(name), poly);
+  typedef boost::graph_traits<Poly>::vertex_descriptor Poly_vertex;
+  std::map<Poly_vertex, EPICK::Point_2> storage;
+  auto puv = boost::make_assoc_property_map(storage);
+  SMP::Measured_conformal_parameterizer_3<Poly> p;
+  p.set_border_choice(SMP::Measured_conformal_parameterizer_3<Poly>::AUTOMATIC_BORDER);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(poly, p, mbp_test::longest_border(poly), puv), SMP::OK);
+  BOOST_TEST(p.last_report().chosen_candidate == first.last_report().chosen_candidate);
+  std::map<std::array<double, 3>, K::Point_2> by_point;
+  for(vertex_descriptor v : vertices(m))
+    by_point[{m.point(v).x(), m.point(v).y(), m.point(v).z()}] = a[v];
+  double worst = 0.;
+  for(Poly_vertex v : vertices(poly))
+  {
+    const K::Point_2& ref = by_point.at({v->point().x(), v->point().y(), v->point().z()});
+    worst = (std::max)(worst, std::hypot(ref.x() - get(puv, v).x(), ref.y() - get(puv, v).y()));
+  }
+  BOOST_TEST(worst < 1e-9);
 }

@@ -34,6 +34,7 @@ struct Options
   bool json = false;
   bool help = false;
   bool repair = true;       // --no-repair turns it off
+  bool auto_border = false; // --border=auto: the best border of the family (measured is the default)
   bool fixed_center = false;        // --center=vertex:N
   std::size_t center_vertex = 0;    // N
   std::string center = "poisson";   // poisson, or geodesic:METHOD (when not fixed_center)
@@ -66,8 +67,9 @@ inline std::string usage(const std::string& default_mesh)
   std::string u =
     "usage: measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]\n"
     "                                 [--center=poisson|geodesic[:METHOD]|vertex:N]\n"
-    "                                 [--distance=poisson|METHOD|straightest] [--solver=cholmod|ldlt]\n"
-    "                                 [--output=FILE] [--svg=FILE] [--json] [--no-repair] [--help]\n"
+    "                                 [--distance=poisson|METHOD|straightest] [--border=measured|auto]\n"
+    "                                 [--solver=cholmod|ldlt] [--output=FILE] [--svg=FILE] [--json]\n"
+    "                                 [--no-repair] [--help]\n"
     "\n"
     "Flattens a disk-like triangle mesh with the measured boundary parameterization of\n"
     "\"Measured boundary parameterization based on Poisson's equation\": the longest border is\n"
@@ -115,6 +117,14 @@ inline std::string usage(const std::string& default_mesh)
     "                     fails, naming the border vertex, when a plane curve misses its vertex\n"
     "                     METHOD: fast-marching, dijkstra (along edges), heat (heat method),\n"
     "                     heat-idt (heat method on the intrinsic Delaunay triangulation), exact\n"
+    "  --border=measured  the border at the measured distances (default)\n"
+    "  --border=auto      the best border of a family, all solved with the one factorization of\n"
+    "                     the interior: the circle (arc length), the measured border of\n"
+    "                     --distance and a second measured border (fast marching geodesics, or\n"
+    "                     the Poisson distance map when --distance=fast-marching), and blends of\n"
+    "                     each toward the circle, t in [0, 1] (grid 0, 1/2, 1 refined by golden\n"
+    "                     section: 13 borders at most). The valid border of lowest angle\n"
+    "                     distortion is kept; the summary names it, --json lists every candidate\n"
     "  --solver=NAME      sparse Cholesky factorization: cholmod (CHOLMOD supernodal) or ldlt\n"
     "                     (Eigen's SimplicialLDLT). Default: ";
   u += has_cholmod() ? "cholmod" : "ldlt (this build has no CHOLMOD)";
@@ -161,7 +171,7 @@ inline std::string parse_options(int argc, char** argv, Options& o)
   using internal::starts_with;
   std::vector<std::string> positional;
   bool seen_center = false, seen_distance = false, seen_solver = false, seen_svg = false, seen_json = false;
-  bool seen_output = false, seen_seams = false;
+  bool seen_output = false, seen_seams = false, seen_border = false;
   bool options_ended = false;
 
   // `--name=value`: the value, or an error for a missing or repeated option.
@@ -243,6 +253,17 @@ inline std::string parse_options(int argc, char** argv, Options& o)
         return "unknown value '" + value + "' of --distance (expected poisson, fast-marching, dijkstra, "
                "heat, heat-idt, exact or straightest)";
       o.distance = value;
+    }
+    else if(arg == "--border" || starts_with(arg, "--border="))
+    {
+      if(!(error = value_of(arg, "--border", seen_border, value)).empty())
+        return error;
+      if(value == "measured")
+        o.auto_border = false;
+      else if(value == "auto")
+        o.auto_border = true;
+      else
+        return "unknown value '" + value + "' of --border (expected measured or auto)";
     }
     else if(arg == "--solver" || starts_with(arg, "--solver="))
     {

@@ -45,8 +45,11 @@ class Json_writer
 public:
   Json_writer& begin_object(const std::string& key = std::string()) { return open(key, '{', false); }
   Json_writer& end_object() { return close('}'); }
-  /// an array, written on one line
-  Json_writer& begin_array(const std::string& key = std::string()) { return open(key, '[', true); }
+  /// an array, written on one line unless `one_line` is false (an array of objects)
+  Json_writer& begin_array(const std::string& key = std::string(), bool one_line = true)
+  {
+    return open(key, '[', one_line);
+  }
   Json_writer& end_array() { return close(']'); }
 
   Json_writer& member(const std::string& key, const std::string& value) { return raw(key, quoted(value)); }
