@@ -32,6 +32,14 @@ struct Svg_layout
   std::string center_label;                               // e.g. "center (vertex 12)"
   std::string title;                                      // first caption line (mesh name)
   std::vector<std::string> caption;                       // further caption lines
+  // Color range of the angle distortion: when 0 < color_lo < color_hi, this fixed range
+  // (e.g. shared by several pictures to compare); otherwise the 2nd and 98th percentiles.
+  double color_lo = 0., color_hi = 0.;
+  bool legend = true;                                     // the color bar and marks on the right
+  bool center_text = true;                                // the center's label beside its marker
+  int wireframe = -1;                                     // mesh edges: 1 drawn, 0 not, -1 when they are long enough
+  double mark_scale = 1.;                                 // scales the border line and the center marker of the
+                                                          // layout (for a picture shown smaller than its nominal size)
 };
 
 namespace internal {
@@ -116,7 +124,8 @@ inline std::string svg_document(const Svg_layout& layout)
   }
   const long w = (std::max)(1L, std::lround((umax - umin) * unit));
   const long h = (std::max)(1L, std::lround((vmax - vmin) * unit));
-  const long caption_height = pad + line * long(1 + layout.caption.size()) + pad / 2;
+  const bool has_caption = !layout.title.empty() || !layout.caption.empty();
+  const long caption_height = has_caption ? pad + line * long(1 + layout.caption.size()) + pad / 2 : pad;
   const long x0 = pad, y0 = caption_height;
   // UV -> SVG, v upwards
   std::vector<std::array<long, 2> > xy(layout.uv.size());
@@ -125,8 +134,8 @@ inline std::string svg_document(const Svg_layout& layout)
 
   const long legend_x = x0 + w + pad;
   const long legend_height = 2 * line + bar_height + 5 * line;
-  const long width = legend_x + legend_width;
-  const long height = y0 + (std::max)(h, legend_height) + pad;
+  const long width = layout.legend ? legend_x + legend_width : x0 + w + pad;
+  const long height = y0 + (layout.legend ? (std::max)(h, legend_height) : h) + pad;
 
   // Color scale: log10 of the per-face angle distortion between its 2nd and 98th percentiles
   // over the faces with a positive value (robust to a few extreme faces); values beyond the
@@ -136,7 +145,12 @@ inline std::string svg_document(const Svg_layout& layout)
     if(a > 0. && std::isfinite(a))
       positive.push_back(a);
   double lo = 0., hi = 0.;
-  if(!positive.empty())
+  if(layout.color_lo > 0. && layout.color_hi > layout.color_lo)
+  {
+    lo = layout.color_lo;
+    hi = layout.color_hi;
+  }
+  else if(!positive.empty())
   {
     std::sort(positive.begin(), positive.end());
     lo = positive[std::size_t(0.02 * double(positive.size() - 1))];
@@ -179,7 +193,9 @@ inline std::string svg_document(const Svg_layout& layout)
   }
   // Draw the mesh edges when they are at least 6 pixels long on average; otherwise stroke
   // each face with its own color to hide the hairline seams of anti-aliasing.
-  const bool wireframe = !layout.faces.empty() && edge_sum / double(layout.faces.size()) >= 60.;
+  const bool wireframe = (layout.wireframe >= 0) ? layout.wireframe > 0
+                                                 : !layout.faces.empty() && edge_sum / double(layout.faces.size()) >= 60.;
+  const long border_width = std::lround(22. * layout.mark_scale);
 
   std::string s;
   s.reserve(64 * layout.faces.size() + 8192);
@@ -218,7 +234,7 @@ inline std::string svg_document(const Svg_layout& layout)
   // Border: a closed polyline.
   if(!layout.border.empty())
   {
-    s += "<polygon fill=\"none\" stroke=\"#000000\" stroke-width=\"22\" stroke-linejoin=\"round\" points=\"";
+    s += "<polygon fill=\"none\" stroke=\"#000000\" stroke-width=\"" + std::to_string(border_width) + "\" stroke-linejoin=\"round\" points=\"";
     for(std::size_t k = 0; k < layout.border.size(); ++k)
     {
       const auto& p = xy[layout.border[k]];
@@ -235,16 +251,23 @@ inline std::string svg_document(const Svg_layout& layout)
     s += "<g fill=\"none\" stroke=\"#ff1a1a\" stroke-width=\"25\">" + markers + "</g>\n";
 
   // Center: a target, and its label on a white box.
-  auto center_marker = [](long cx, long cy) {
+  auto center_marker = [](long cx, long cy, double scale) {
     const std::string x = std::to_string(cx), y = std::to_string(cy);
-    return "<circle cx=\"" + x + "\" cy=\"" + y + "\" r=\"110\" fill=\"#ffffff\" stroke=\"#000000\" stroke-width=\"25\"/>"
-           "<path d=\"M" + std::to_string(cx - 190) + " " + y + "h380M" + x + " " + std::to_string(cy - 190) +
-           "v380\" stroke=\"#000000\" stroke-width=\"25\"/>";
+    const long r = std::lround(110. * scale), arm = std::lround(190. * scale), sw = std::lround(25. * scale);
+    return "<circle cx=\"" + x + "\" cy=\"" + y + "\" r=\"" + std::to_string(r) +
+           "\" fill=\"#ffffff\" stroke=\"#000000\" stroke-width=\"" + std::to_string(sw) + "\"/>"
+           "<path d=\"M" + std::to_string(cx - arm) + " " + y + "h" + std::to_string(2 * arm) + "M" + x + " " +
+           std::to_string(cy - arm) + "v" + std::to_string(2 * arm) + "\" stroke=\"#000000\" stroke-width=\"" +
+           std::to_string(sw) + "\"/>";
   };
   if(layout.center < xy.size())
   {
     const auto& c = xy[layout.center];
-    s += center_marker(c[0], c[1]) + "\n";
+    s += center_marker(c[0], c[1], layout.mark_scale) + "\n";
+  }
+  if(layout.center < xy.size() && layout.center_text)
+  {
+    const auto& c = xy[layout.center];
     // on a translucent white box (width estimated from the number of characters), above
     // right of the marker, or left / below when it would leave the drawing
     const long label_width = long(115 * layout.center_label.size()) + 120;
@@ -254,6 +277,12 @@ inline std::string svg_document(const Svg_layout& layout)
          std::to_string(label_width) + "\" height=\"290\" rx=\"40\" fill=\"#ffffff\" fill-opacity=\"0.8\"/>";
     s += "<text x=\"" + std::to_string(box_x + 60) + "\" y=\"" + std::to_string(box_y + 215) +
          "\" font-size=\"210\">" + xml_escaped(layout.center_label) + "</text>\n";
+  }
+
+  if(!layout.legend)
+  {
+    s += "</svg>\n";
+    return s;
   }
 
   // Legend: the color bar, high values on top, with ticks at the powers of ten inside the
@@ -325,7 +354,7 @@ inline std::string svg_document(const Svg_layout& layout)
   s += "<path d=\"M" + std::to_string(legend_x) + " " + std::to_string(y) + "h400\" stroke=\"#000000\" stroke-width=\"22\"/>\n";
   legend_text(y, "border (" + std::to_string(layout.border.size()) + " vertices)");
   y += line + 100;
-  s += center_marker(legend_x + 200, y) + "\n";
+  s += center_marker(legend_x + 200, y, 1.) + "\n";
   legend_text(y, "center");
 
   s += "</svg>\n";
