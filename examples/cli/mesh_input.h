@@ -5,6 +5,8 @@
 #ifndef MBP_CLI_MESH_INPUT_H
 #define MBP_CLI_MESH_INPUT_H
 
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -21,6 +23,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <new>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -89,6 +94,198 @@ inline std::string find_non_finite_number(const std::string& path)
   return std::string();
 }
 
+// The size in bytes of a PLY scalar type, 0 when unknown.
+inline std::size_t ply_type_size(const std::string& type)
+{
+  if(type == "char" || type == "uchar" || type == "int8" || type == "uint8")
+    return 1;
+  if(type == "short" || type == "ushort" || type == "int16" || type == "uint16")
+    return 2;
+  if(type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" || type == "float32")
+    return 4;
+  if(type == "double" || type == "float64")
+    return 8;
+  return 0;
+}
+
+// CGAL's readers size their containers from the counts a file announces before checking that
+// the file holds that much data: an OFF header or a PLY list count of a few billion makes a
+// file of a few bytes allocate gigabytes (and CGAL 5.5's OFF header code converts an
+// oversized count to int, which is undefined). Every vertex, face or list entry takes at least
+// one byte, so a count larger than the file is corrupt. Returns the message, or an empty
+// string when the counts are plausible (the readers check the rest).
+inline std::string find_impossible_count(const std::string& path, const std::string& ext)
+{
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const double size = double(bytes.size());
+  auto too_large = [&](const std::string& what, double count) {
+    return what + " " + std::to_string((long long)count) + ", more than a file of " +
+           std::to_string(bytes.size()) + " bytes can hold (corrupt or truncated)";
+  };
+  auto to_number = [](const std::string& token, double& value) {
+    char* end = nullptr;
+    value = std::strtod(token.c_str(), &end);
+    return !token.empty() && end == token.c_str() + token.size();
+  };
+
+  if(ext == "off")
+  {
+    // [ST][C][N][4][n]OFF [BINARY], then (n: the dimension), then V F E; '#' starts a comment
+    std::istringstream text(bytes);
+    std::vector<std::string> tokens;
+    std::string line;
+    while(tokens.size() < 6 && std::getline(text, line))
+    {
+      std::istringstream words(line.substr(0, line.find('#')));
+      std::string w;
+      while(words >> w)
+        tokens.push_back(w);
+    }
+    if(tokens.empty() || tokens[0].size() < 3 || tokens[0].compare(tokens[0].size() - 3, 3, "OFF") != 0)
+      return std::string();
+    if(tokens.size() > 1 && tokens[1] == "BINARY")
+      return std::string();  // binary counts: CGAL's scanner reads them; not checked here
+    std::size_t first = (tokens[0].find('n') != std::string::npos) ? 2 : 1;
+    const char* names[2] = {"the header announces vertices:", "the header announces faces:"};
+    for(std::size_t k = 0; k < 2 && first + k < tokens.size(); ++k)
+    {
+      double count = 0.;
+      if(to_number(tokens[first + k], count) && (count < 0. || count > size))
+        return too_large(names[k], count);
+    }
+    return std::string();
+  }
+
+  if(ext == "ply")
+  {
+    // the header: format, elements (name, count) and their properties (scalar or list)
+    struct Property { bool list = false; std::string count_type, type; std::string name; };
+    struct Element { std::string name; double count = 0.; std::vector<Property> properties; };
+    std::vector<Element> elements;
+    std::string format;
+    std::size_t pos = 0;
+    bool header_ended = false;
+    while(pos < bytes.size())
+    {
+      std::size_t end = bytes.find('\n', pos);
+      if(end == std::string::npos)
+        end = bytes.size();
+      std::istringstream words(bytes.substr(pos, end - pos));
+      pos = end + 1;
+      std::string keyword;
+      words >> keyword;
+      if(keyword == "format")
+        words >> format;
+      else if(keyword == "element")
+      {
+        Element e;
+        std::string count;
+        words >> e.name >> count;
+        if(!to_number(count, e.count))
+          return std::string();
+        if(e.count < 0. || e.count > size)
+          return too_large("the header announces " + e.name + " elements:", e.count);
+        elements.push_back(e);
+      }
+      else if(keyword == "property" && !elements.empty())
+      {
+        Property p;
+        std::string type;
+        words >> type;
+        if(type == "list")
+        {
+          p.list = true;
+          words >> p.count_type >> p.type;
+        }
+        else
+          p.type = type;
+        words >> p.name;
+        elements.back().properties.push_back(p);
+      }
+      else if(keyword == "end_header")
+      {
+        header_ended = true;
+        break;
+      }
+    }
+    if(!header_ended)
+      return std::string();
+
+    // the body: every list count must fit in what is left of the file
+    auto list_too_long = [&](const Element& e, const Property& p, double count) {
+      return "element '" + e.name + "', property '" + p.name + "': a list of " +
+             std::to_string((long long)count) + " entries, more than the rest of the file holds (corrupt)";
+    };
+    if(format == "ascii")
+    {
+      std::istringstream body(bytes.substr(std::min(pos, bytes.size())));
+      std::vector<std::string> tokens;
+      for(std::string t; body >> t;)
+        tokens.push_back(t);
+      std::size_t t = 0;
+      for(const Element& e : elements)
+        for(double i = 0.; i < e.count && !e.properties.empty(); i += 1.)
+          for(const Property& p : e.properties)
+          {
+            if(t >= tokens.size())
+              return std::string();  // truncated: the reader says so
+            if(!p.list)
+            {
+              ++t;
+              continue;
+            }
+            double count = 0.;
+            if(!to_number(tokens[t++], count))
+              return std::string();
+            if(count < 0. || count > double(tokens.size() - t))
+              return list_too_long(e, p, count);
+            t += std::size_t(count);
+          }
+      return std::string();
+    }
+    if(format == "binary_little_endian" || format == "binary_big_endian")
+    {
+      const bool little = (format == "binary_little_endian");
+      auto read_unsigned = [&](std::size_t at, std::size_t n) {
+        double v = 0.;
+        for(std::size_t k = 0; k < n; ++k)
+          v = v * 256. + double(static_cast<unsigned char>(bytes[at + (little ? n - 1 - k : k)]));
+        return v;
+      };
+      for(const Element& e : elements)
+        for(double i = 0.; i < e.count && !e.properties.empty(); i += 1.)
+          for(const Property& p : e.properties)
+          {
+            if(pos >= bytes.size())
+              return std::string();  // truncated: the reader says so
+            const std::size_t item = ply_type_size(p.type);
+            if(item == 0)
+              return std::string();  // unknown type: the reader says so
+            if(!p.list)
+            {
+              pos += item;
+              continue;
+            }
+            const std::size_t n = ply_type_size(p.count_type);
+            if(n == 0 || p.count_type == "float" || p.count_type == "float32" || p.count_type == "double" ||
+               p.count_type == "float64" || pos + n > bytes.size())
+              return std::string();
+            double count = read_unsigned(pos, n);
+            const bool is_signed = p.count_type[0] != 'u';
+            if(is_signed && count >= std::ldexp(1., int(8 * n) - 1))
+              count -= std::ldexp(1., int(8 * n));  // two's complement
+            pos += n;
+            if(count < 0. || count * double(item) > double(bytes.size() - pos))
+              return list_too_long(e, p, count);
+            pos += std::size_t(count) * item;
+          }
+      return std::string();
+    }
+  }
+  return std::string();
+}
+
 } // namespace internal
 
 /// reads the polygon mesh of the file `path` (.off, .obj, .ply or .stl). Vertices keep the
@@ -133,30 +330,87 @@ Failure read_mesh(const std::string& path, Mesh& mesh)
     return f;
   }
 
-  if(CGAL::IO::read_polygon_mesh(path, mesh))
-    return f;
-  mesh.clear();
-
-  // Why did it fail? A non-finite coordinate, a soup that is not a manifold mesh, or a
-  // file that cannot be parsed at all.
-  const std::string non_finite = internal::find_non_finite_number(path);
-  if(!non_finite.empty())
+  const std::string impossible = internal::find_impossible_count(path, ext);
+  if(!impossible.empty())
   {
-    f.code = SMP::ERROR_NON_FINITE_COORDINATES;
-    f.detail = non_finite;
+    f.detail = "cannot read it: " + impossible;
     return f;
   }
+
+  // CGAL's read_polygon_mesh() is its polygon soup reader followed by a mesh builder that
+  // indexes the points with the face indices unchecked (CGAL 5.5): an index out of range is a
+  // heap overflow. So the soup is read, its indices checked, and the mesh built here as that
+  // builder does (every point a vertex, in file order; faces added in file order).
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::property_traits<
     typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point_3;
   std::vector<Point_3> points;
   std::vector<std::vector<std::size_t> > polygons;
-  if(CGAL::IO::read_polygon_soup(path, points, polygons) && !polygons.empty())
-    f.detail = "not a polygon mesh: its " + std::to_string(polygons.size()) +
-               " faces do not form a consistently oriented 2-manifold (an edge shared by more than"
-               " two faces, a non-manifold vertex, inconsistent orientation, or a face that uses"
-               " a vertex twice)";
-  else
+  bool read = false;
+  try
+  {
+    read = CGAL::IO::read_polygon_soup(path, points, polygons);
+  }
+  catch(const std::bad_alloc&)  // a count the checks above let through, still too large
+  {
+    read = false;
+  }
+  catch(const std::length_error&)
+  {
+    read = false;
+  }
+  if(!read)
+  {
+    // Why did it fail? A non-finite coordinate, or a file that cannot be parsed at all.
+    const std::string non_finite = internal::find_non_finite_number(path);
+    if(!non_finite.empty())
+    {
+      f.code = SMP::ERROR_NON_FINITE_COORDINATES;
+      f.detail = non_finite;
+      return f;
+    }
     f.detail = "cannot read it: not a valid ." + ext + " mesh file (malformed or truncated)";
+    return f;
+  }
+  for(std::size_t i = 0; i < polygons.size(); ++i)
+    for(std::size_t k : polygons[i])
+      if(k >= points.size())
+      {
+        // OBJ numbers vertices from 1 (negative: from the end); the others from 0
+        const std::string index = (k > points.size() + 1000000000ul) ? std::string("far out of range")
+                                  : (ext == "obj") ? std::to_string(k + 1) + " (1-based)"
+                                                   : std::to_string(k) + " (0-based)";
+        f.detail = "cannot read it: face " + std::to_string(i) + " uses vertex index " + index +
+                   ", but the file has " + std::to_string(points.size()) + " vertices";
+        return f;
+      }
+
+  std::vector<vertex_descriptor> vertex(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    vertex[i] = add_vertex(mesh);
+    put(get(CGAL::vertex_point, mesh), vertex[i], points[i]);
+  }
+  bool built = true;
+  std::vector<vertex_descriptor> face;
+  for(const std::vector<std::size_t>& polygon : polygons)
+  {
+    face.clear();
+    for(std::size_t k : polygon)
+      face.push_back(vertex[k]);
+    if(CGAL::Euler::add_face(face, mesh) == boost::graph_traits<Mesh>::null_face())
+    {
+      built = false;
+      break;
+    }
+  }
+  if(built && CGAL::is_valid_polygon_mesh(mesh))
+    return f;
+  mesh.clear();
+  f.detail = "not a polygon mesh: its " + std::to_string(polygons.size()) +
+             " faces do not form a consistently oriented 2-manifold (an edge shared by more than"
+             " two faces, a non-manifold vertex, inconsistent orientation, or a face that uses"
+             " a vertex twice or has fewer than three vertices)";
   return f;
 }
 
