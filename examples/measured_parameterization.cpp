@@ -154,6 +154,10 @@ public:
     return dispatch([&](const auto& policy) { return policy.compute_border_distances(patch, center, distances); });
   }
 
+  // whether the distances are fast marching geodesics (then --border=auto takes the Poisson
+  // distance map for its second measured border)
+  bool measures_fast_marching_geodesics() const { return m_name == "fast-marching"; }
+
   // the border vertices straightest geodesics could not reach in the last call
   const Straightest_failure& straightest_failure() const { return m_straightest.last_failure(); }
 

@@ -52,6 +52,25 @@ template <class TriangleMesh>
 struct Is_fast_marching_border<Geodesic_border_distance<TriangleMesh, Fast_marching_geodesics> >
   : std::true_type {};
 
+// A policy that chooses its distances at run time says so with an optional member
+// `bool measures_fast_marching_geodesics() const`.
+template <class Policy, class = void>
+struct Has_fast_marching_query : std::false_type {};
+
+template <class Policy>
+struct Has_fast_marching_query<
+  Policy, std::void_t<decltype(static_cast<bool>(std::declval<const Policy&>().measures_fast_marching_geodesics()))> >
+  : std::true_type {};
+
+template <class Policy>
+bool measures_fast_marching_geodesics(const Policy& policy)
+{
+  if constexpr(Has_fast_marching_query<Policy>::value)
+    return static_cast<bool>(policy.measures_fast_marching_geodesics());
+  else
+    return Is_fast_marching_border<Policy>::value;
+}
+
 } // namespace internal
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
@@ -350,12 +369,16 @@ public:
   /// back-substitutions and one evaluation of the angle distortion, and keeps the valid one of
   /// lowest angle distortion. The family: the circle (arc-length angles); the policy's
   /// measured border and a second measured border (fast marching geodesic distances from the
-  /// center, or the Poisson distance map when the policy uses fast marching); and their
+  /// center, or the Poisson distance map when the policy uses fast marching: a policy that
+  /// chooses its distances at run time tells with an optional member
+  /// `bool measures_fast_marching_geodesics() const`); and their
   /// blends toward the circle in polar coordinates, angle and radius each
   /// \f$ (1 - t) \cdot \mathrm{measured} + t \cdot \mathrm{circle} \f$ after normalizing the
   /// mean radius. The search: \f$ t = 0, 1/2, 1 \f$ (the circle once) for both measured
-  /// borders, then four golden-section steps around the better grid point of each: 13 borders
-  /// at most. The circle and both pure measured borders are members, so the result is never
+  /// borders, then, for each, a golden-section search in the half interval around its best
+  /// grid point: two points and two steps, four borders (when both points of a step fold,
+  /// the step moves toward the circle, which is valid). 13 borders at most, evaluated in
+  /// batches of multi-column back-substitutions. The circle and both pure measured borders are members, so the result is never
   /// worse than any of them by that measure. `last_report().border_candidates` lists every
   /// border tried. If no member is valid the measured border is repaired (`Repair`).
   void set_border_choice(Border_choice choice) { m_border_choice = choice; }
@@ -492,7 +515,7 @@ private:
     // the second measured border's radii, computed in a second thread while the first
     // borders are evaluated (they do not need it)
     std::vector<double> second(patch.border().size());
-    report.second_border_is_poisson = internal::Is_fast_marching_border<Border_distance>::value;
+    report.second_border_is_poisson = internal::measures_fast_marching_geodesics(m_border.border_distance());
     auto second_radii = [&patch, &second, center, poisson = report.second_border_is_poisson]() {
       std::vector<double> values;
       const Error_code status =
@@ -641,7 +664,9 @@ private:
       std::vector<bool> new_is_x1;
       for(Bracket& br : brackets)
       {
-        new_is_x1.push_back(br.f1 <= br.f2);
+        // two invalid points: the valid side is the circle's (t = 1 is convex, hence valid)
+        const bool both_invalid = !std::isfinite(br.f1) && !std::isfinite(br.f2);
+        new_is_x1.push_back(!both_invalid && br.f1 <= br.f2);
         if(new_is_x1.back())  // the minimum is in [a, x2]
         {
           br.b = br.x2;
