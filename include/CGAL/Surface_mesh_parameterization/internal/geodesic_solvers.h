@@ -168,26 +168,30 @@ public:
   explicit Geodesic_solver(const Patch& patch)
     : m_mesh(patch_surface_mesh<K::Point_3>(patch.points(), patch.faces_indices())),
       m_paths(std::make_unique<Shortest_path>(*m_mesh)),
-      m_border_neighbors(patch.number_of_vertices())
+      m_neighbors(patch.number_of_vertices())
   {
+    // every edge once: from its interior side, or from its only face
     const auto& faces = patch.faces_indices();
     const auto& single = patch.single_edge_masks();
     for(std::size_t f = 0; f < faces.size(); ++f)
       for(int k = 0; k < 3; ++k)
-        if((single[f] >> k) & 1)
+      {
+        const int a = faces[f][static_cast<std::size_t>((k + 1) % 3)];
+        const int b = faces[f][static_cast<std::size_t>((k + 2) % 3)];
+        if(((single[f] >> k) & 1) || a < b)
         {
-          const int a = faces[f][static_cast<std::size_t>((k + 1) % 3)];
-          const int b = faces[f][static_cast<std::size_t>((k + 2) % 3)];
-          m_border_neighbors[static_cast<std::size_t>(a)].push_back(b);
-          m_border_neighbors[static_cast<std::size_t>(b)].push_back(a);
+          m_neighbors[static_cast<std::size_t>(a)].push_back(b);
+          m_neighbors[static_cast<std::size_t>(b)].push_back(a);
         }
+      }
   }
 
   // CGAL 5.5's Surface_mesh_shortest_path fails (an assertion, or undefined behaviour when
-  // assertions are off) when two sources are the ends of one border edge (CGAL issue #8499).
-  // The sources are therefore split into groups without such a pair (greedy colouring: at
-  // most 3 groups, since border edges form cycles), one sequence tree per group, and the
-  // distance is the minimum over the groups.
+  // assertions are off) when two sources are the ends of one edge (CGAL issue #8499): of a
+  // border edge, and also of an interior edge joining two border vertices (an ear triangle),
+  // which the sanitizer build with assertions on found on a flat hexagonal disk. The sources
+  // are therefore split into groups without such a pair (greedy colouring), one sequence tree
+  // per group, and the distance is the minimum over the groups.
   Error_code compute(const std::vector<int>& sources, std::vector<double>& distances) const
   {
     const std::size_t n = m_mesh->number_of_vertices();
@@ -201,7 +205,7 @@ public:
       for(bool clash = true; clash; )
       {
         clash = false;
-        for(int b : m_border_neighbors[static_cast<std::size_t>(s)])
+        for(int b : m_neighbors[static_cast<std::size_t>(s)])
           if(group_of[static_cast<std::size_t>(b)] == g)
           {
             clash = true;
@@ -235,7 +239,7 @@ public:
 private:
   std::unique_ptr<SM> m_mesh;
   std::unique_ptr<Shortest_path> m_paths;
-  std::vector<std::vector<int> > m_border_neighbors;
+  std::vector<std::vector<int> > m_neighbors;  // the vertices joined to each by an edge
 };
 
 } // namespace internal
