@@ -7,3 +7,5 @@ bash scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure
+# Sanitizer build and tests, and a bounded fuzzing run (scripts/run_hardening.sh).
+bash scripts/run_hardening.sh

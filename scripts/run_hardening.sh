@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Hardening checks (called at the end of scripts/run_tests.sh; can be run alone):
+#  1. the test suite and the example programs built with Clang, AddressSanitizer and
+#     UndefinedBehaviorSanitizer (-O1, every finding fatal) in build-asan/, and run by CTest;
+#  2. the libFuzzer target over the command-line program's input path (test/fuzz), run for
+#     MBP_FUZZ_SECONDS (default 60) on a scratch copy of the seed corpus (test/fuzz/corpus is
+#     not modified). A crash, a sanitizer finding, a leak, a timeout or an out-of-memory is a
+#     failure; the input that caused it is kept in build-asan/fuzz-artifacts/.
+# Exits non-zero when any step fails. Needs clang and libclang-rt-14-dev (scripts/setup.sh).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+build=build-asan
+fuzz_seconds="${MBP_FUZZ_SECONDS:-60}"
+jobs="$(nproc)"
+start=$(date +%s)
+elapsed() { echo "$(( $(date +%s) - start )) s"; }
+
+export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1}"
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+
+# -- 1. sanitizer build and tests ------------------------------------------------------------
+# -O1 keeps the instrumented build and the tests fast; assertions stay on (no NDEBUG).
+# The benchmark is not built; the examples are (test_cli runs the command-line program).
+echo "hardening: ASan+UBSan build in $build"
+cmake -S . -B "$build" \
+  -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" \
+  -DMBP_SANITIZERS=address,undefined \
+  -DMBP_BUILD_TESTS=ON -DMBP_BUILD_EXAMPLES=ON -DMBP_BUILD_BENCHMARK=OFF \
+  -DMBP_BUILD_FUZZERS=ON
+cmake --build "$build" -j"$jobs"
+echo "hardening: build done ($(elapsed))"
+ctest --test-dir "$build" --output-on-failure -j"$jobs"
+echo "hardening: sanitizer tests passed ($(elapsed))"
+
+# -- 2. bounded fuzzing ----------------------------------------------------------------------
+fuzzer="$build/test/fuzz/fuzz_mesh_input"
+scratch="$(mktemp -d)"
+trap 'rm -rf "$scratch"' EXIT
+cp test/fuzz/corpus/* "$scratch/"
+artifacts="$build/fuzz-artifacts/"
+mkdir -p "$artifacts"
+echo "hardening: fuzzing for $fuzz_seconds s on a copy of test/fuzz/corpus"
+# one worker (the machine is shared); inputs up to 8 KiB; an input slower than 30 s is a hang
+if ! "$fuzzer" -max_total_time="$fuzz_seconds" -timeout=30 -rss_limit_mb=2048 -max_len=8192 \
+                -print_final_stats=1 -artifact_prefix="$artifacts" "$scratch" 2> "$build/fuzz.log"; then
+  tail -n 60 "$build/fuzz.log"
+  echo "hardening: FAILED: the fuzzer found a crash; reproducer(s) in $artifacts:" >&2
+  ls -l "$artifacts" >&2
+  exit 1
+fi
+grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb|^#[0-9]+.*DONE" "$build/fuzz.log" || true
+echo "hardening: fuzzing found nothing ($(elapsed) in all)"
