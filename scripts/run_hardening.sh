@@ -36,6 +36,10 @@ ctest --test-dir "$build" --output-on-failure -j"$jobs"
 echo "hardening: sanitizer tests passed ($(elapsed))"
 
 # -- 2. bounded fuzzing ----------------------------------------------------------------------
+if [ "$fuzz_seconds" -le 0 ]; then
+  echo "hardening: fuzzing skipped (MBP_FUZZ_SECONDS=$fuzz_seconds; the corpus ran in CTest)"
+  exit 0
+fi
 fuzzer="$build/test/fuzz/fuzz_mesh_input"
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT

@@ -5,7 +5,7 @@ OBJ, PLY (ASCII and binary) and STL (ASCII and binary), and malformed or unsuppo
 files, non-manifold edges and vertices, closed surfaces, two components, a handle, zero-area
 faces, a face that uses a vertex twice, a header announcing a billion vertices).
 
-    python3 test/fuzz/make_corpus.py          # rewrites test/fuzz/corpus/
+    python3 test/fuzz/make_corpus.py          # rewrites test/fuzz/corpus/ (keeps found_*)
 """
 import math
 import os
@@ -151,7 +151,8 @@ def stl_binary(pts, tris):
 def main():
     os.makedirs(OUT, exist_ok=True)
     for f in os.listdir(OUT):
-        os.remove(os.path.join(OUT, f))
+        if not f.startswith("found_"):  # inputs the fuzzer found are kept
+            os.remove(os.path.join(OUT, f))
     files = {}
     g2 = grid(2)
     g3 = grid(3)
