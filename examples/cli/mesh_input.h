@@ -188,7 +188,9 @@ inline std::string find_impossible_count(const std::string& path, const std::str
           return too_large("the header announces " + e.name + " elements:", e.count);
         elements.push_back(e);
       }
-      else if(keyword == "property" && !elements.empty())
+      else if(keyword == "property" && elements.empty())  // CGAL 5.5 reads past its element list
+        return "the PLY header has a property before any element (corrupt)";
+      else if(keyword == "property")
       {
         Property p;
         std::string type;
@@ -404,7 +406,7 @@ Failure read_mesh(const std::string& path, Mesh& mesh)
       break;
     }
   }
-  if(built && CGAL::is_valid_polygon_mesh(mesh))
+  if(built)  // Euler::add_face keeps the mesh valid (isolated vertices included)
     return f;
   mesh.clear();
   f.detail = "not a polygon mesh: its " + std::to_string(polygons.size()) +
