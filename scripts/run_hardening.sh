@@ -32,7 +32,8 @@ cmake -S . -B "$build" \
   -DMBP_BUILD_FUZZERS=ON
 cmake --build "$build" -j"$jobs"
 echo "hardening: build done ($(elapsed))"
-ctest --test-dir "$build" --output-on-failure -j"$jobs"
+# a test slower than 15 min under the sanitizers is reported as a failure (a hang)
+ctest --test-dir "$build" --output-on-failure -j"$jobs" --timeout 900
 echo "hardening: sanitizer tests passed ($(elapsed))"
 
 # -- 2. bounded fuzzing ----------------------------------------------------------------------

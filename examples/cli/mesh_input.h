@@ -154,6 +154,46 @@ inline std::string find_impossible_count(const std::string& path, const std::str
       if(to_number(tokens[first + k], count) && (count < 0. || count > size))
         return too_large(names[k], count);
     }
+    // Vertex colors (C before OFF): CGAL 5.5's scanner reads the color entries of a vertex
+    // line without checking that the line has them (a heap overflow on a malformed line).
+    // Every vertex line must be numbers: the coordinates (and normals, texture), then 0, 1,
+    // 3 or 4 color entries.
+    const std::string keyword = tokens[0].substr(0, tokens[0].size() - 3);
+    double vertex_count = 0.;
+    if(keyword.find('C') != std::string::npos && keyword.find('n') == std::string::npos &&
+       first < tokens.size() && to_number(tokens[first], vertex_count))
+    {
+      const std::size_t fixed = ((keyword.find('4') != std::string::npos) ? 4 : 3) +
+                                ((keyword.find('N') != std::string::npos) ? 3 : 0) +
+                                ((keyword.find("ST") != std::string::npos) ? 2 : 0);
+      std::istringstream lines(bytes);
+      std::size_t seen = 0, skip_counts = 1;  // the line of the counts
+      for(std::string l; seen < std::size_t(vertex_count) && std::getline(lines, l);)
+      {
+        std::istringstream words(l.substr(0, l.find('#')));
+        std::vector<std::string> w;
+        for(std::string t; words >> t;)
+          w.push_back(t);
+        if(w.empty() || w[0].find("OFF") != std::string::npos)
+          continue;
+        if(skip_counts > 0)
+        {
+          --skip_counts;
+          continue;
+        }
+        const std::size_t colors = w.size() >= fixed ? w.size() - fixed : std::size_t(-1);
+        bool numbers = true;
+        for(const std::string& t : w)
+        {
+          double value = 0.;
+          numbers = numbers && to_number(t, value);
+        }
+        if(!numbers || !(colors == 0 || colors == 1 || colors == 3 || colors == 4))
+          return "vertex line " + std::to_string(seen) + " is malformed (expected " + std::to_string(fixed) +
+                 " numbers and 0, 1, 3 or 4 color entries)";
+        ++seen;
+      }
+    }
     return std::string();
   }
 
