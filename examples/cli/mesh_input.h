@@ -154,6 +154,34 @@ inline std::string find_impossible_count(const std::string& path, const std::str
       if(to_number(tokens[first + k], count) && (count < 0. || count > size))
         return too_large(names[k], count);
     }
+    // The face lines (after the vertex lines): a face announcing more vertices than the file
+    // has bytes makes CGAL 5.5 resize its index list to that count first.
+    double announced_vertices = 0.;
+    if(tokens.size() > first + 1 && to_number(tokens[first], announced_vertices))
+    {
+      std::istringstream lines(bytes);
+      double line_index = -2.;  // the keyword line and the counts line come first
+      for(std::string l; std::getline(lines, l);)
+      {
+        std::istringstream words(l.substr(0, l.find('#')));
+        std::string w;
+        if(!(words >> w))
+          continue;
+        if(line_index < 0. && w.find("OFF") != std::string::npos && line_index < -1.5)
+        {
+          line_index += 1.;
+          if(words >> w)  // the counts on the keyword line
+            line_index += 1.;
+          continue;
+        }
+        line_index += 1.;
+        double n = 0.;
+        if(line_index > announced_vertices && to_number(w, n) && (n < 0. || n > size))
+          return "face " + std::to_string((long long)(line_index - announced_vertices - 1.)) + " announces " +
+                 w + " vertices, more than a file of " + std::to_string(bytes.size()) +
+                 " bytes can hold (corrupt)";
+      }
+    }
     // Vertex colors (C before OFF): CGAL 5.5's scanner reads the color entries of a vertex
     // line without checking that the line has them (a heap overflow on a malformed line).
     // Every vertex line must be numbers: the coordinates (and normals, texture), then 0, 1,
