@@ -1077,6 +1077,8 @@ std::vector<Bad_case> bad_cases()
      with({"long.ply"}), 1, {"a list of 4000000000 entries", "corrupt"}},
     {"OFF header count larger than the file", {{"huge.off", "OFF\n1000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"}},
      with({"huge.off"}), 1, {"announces vertices: 1000000000", "more than a file of"}},
+    {"OFF face size larger than the file, mid-line", {{"mid.off", "OFF\n 00\n3 0 66666666666 0 0 0\n3 0 1 2\n"}},
+     with({"mid.off"}), 1, {"face 0 announces 66666666666 vertices", "corrupt"}},
     {"handle", {{"torus.off", off_text(mbp_test::punctured_torus())}}, with({"torus.off"}), 1, {"not a topological disc"}},
     {"unknown option", {{"grid.off", grid}}, with({"grid.off", "--frobnicate"}), 2, {"unknown option", "--frobnicate"}},
     {"unknown center", {{"grid.off", grid}}, with({"grid.off", "--center=middle"}), 2, {"--center", "middle"}},

@@ -182,6 +182,66 @@ inline std::string find_impossible_count(const std::string& path, const std::str
                  " bytes can hold (corrupt)";
       }
     }
+    // The same by tokens, as CGAL 5.5's scanner reads: the counts V F E may span lines; a
+    // vertex is its coordinates (the rest of its line skipped: colors); a face is its size,
+    // that many indices, and the rest of its line. A face size larger than the file is
+    // corrupt wherever it stands on its line.
+    {
+      struct Token { std::string text; std::size_t line; };
+      std::vector<Token> all;
+      std::istringstream lines(bytes);
+      std::size_t line_number = 0;
+      for(std::string l; std::getline(lines, l); ++line_number)
+      {
+        std::istringstream words(l.substr(0, l.find('#')));
+        for(std::string w; words >> w;)
+          all.push_back({w, line_number});
+      }
+      const std::string key = tokens[0].substr(0, tokens[0].size() - 3);
+      std::size_t at = 1;
+      double dimension = 3.;
+      if(key.find('n') != std::string::npos)
+      {
+        if(at >= all.size() || !to_number(all[at].text, dimension) || dimension < 0. || dimension > size)
+          return std::string();  // the readers reject it
+        ++at;
+      }
+      double v_count = 0., f_count = 0.;
+      if(at + 2 < all.size() && to_number(all[at].text, v_count) && to_number(all[at + 1].text, f_count) &&
+         v_count >= 0. && f_count >= 0. && v_count <= size && f_count <= size)
+      {
+        at += 3;  // V F E
+        const std::size_t per_vertex = std::size_t(dimension) + ((key.find('4') != std::string::npos) ? 1 : 0) +
+                                       ((key.find('N') != std::string::npos) ? std::size_t(dimension) : 0) +
+                                       ((key.find("ST") != std::string::npos) ? 2 : 0);
+        auto next_line = [&all](std::size_t i) {  // the first token after the line of token i - 1
+          const std::size_t line = all[i - 1].line;
+          while(i < all.size() && all[i].line == line)
+            ++i;
+          return i;
+        };
+        for(std::size_t k = 0; k < std::size_t(v_count) && at < all.size(); ++k)
+        {
+          at += per_vertex;
+          if(at > all.size())
+            break;
+          at = next_line(at);
+        }
+        for(std::size_t k = 0; k < std::size_t(f_count) && at < all.size(); ++k)
+        {
+          double n = 0.;
+          if(!to_number(all[at].text, n))
+            break;
+          if(n < 0. || n > size)
+            return "face " + std::to_string(k) + " announces " + all[at].text + " vertices, more than a file of " +
+                   std::to_string(bytes.size()) + " bytes can hold (corrupt)";
+          at += 1 + std::size_t(n);
+          if(at > all.size())
+            break;
+          at = next_line(at);
+        }
+      }
+    }
     // Vertex colors (C before OFF): CGAL 5.5's scanner reads the color entries of a vertex
     // line without checking that the line has them (a heap overflow on a malformed line).
     // Every vertex line must be numbers: the coordinates (and normals, texture), then 0, 1,
