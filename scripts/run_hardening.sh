@@ -11,7 +11,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 build=build-asan
-fuzz_seconds="${MBP_FUZZ_SECONDS:-60}"
+fuzz_seconds="${MBP_FUZZ_SECONDS:-180}"
 jobs="$(nproc)"
 start=$(date +%s)
 elapsed() { echo "$(( $(date +%s) - start )) s"; }
@@ -49,7 +49,10 @@ artifacts="$build/fuzz-artifacts/"
 mkdir -p "$artifacts"
 echo "hardening: fuzzing for $fuzz_seconds s on a copy of test/fuzz/corpus"
 # one worker (the machine is shared); inputs up to 8 KiB; an input slower than 30 s is a hang
-if ! "$fuzzer" -max_total_time="$fuzz_seconds" -timeout=30 -rss_limit_mb=2048 -max_len=8192 \
+# A fixed seed and a fixed number of runs (about a minute here) make the run reproducible: the
+# same sources give the same inputs, so a CI result can be replayed; MBP_FUZZ_SEED and
+# MBP_FUZZ_RUNS explore further. MBP_FUZZ_SECONDS caps the time.
+if ! "$fuzzer" -seed="${MBP_FUZZ_SEED:-1}" -runs="${MBP_FUZZ_RUNS:-100000}" -max_total_time="$fuzz_seconds" -timeout=30 -rss_limit_mb=2048 -max_len=8192 \
                 -print_final_stats=1 -artifact_prefix="$artifacts" "$scratch" 2> "$build/fuzz.log"; then
   tail -n 60 "$build/fuzz.log"
   echo "hardening: FAILED: the fuzzer found a crash; reproducer(s) in $artifacts:" >&2

@@ -94,6 +94,16 @@ inline std::string find_non_finite_number(const std::string& path)
   return std::string();
 }
 
+// Where the comment of an OFF line starts: a '#' that begins a word ("COFF#16" is one word,
+// as CGAL's scanner reads it), or npos.
+inline std::size_t comment_start(const std::string& line)
+{
+  for(std::size_t i = 0; i < line.size(); ++i)
+    if(line[i] == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(line[i - 1]))))
+      return i;
+  return std::string::npos;
+}
+
 // The size in bytes of a PLY scalar type, 0 when unknown.
 inline std::size_t ply_type_size(const std::string& type)
 {
@@ -137,21 +147,42 @@ inline std::string find_impossible_count(const std::string& path, const std::str
     std::string line;
     while(tokens.size() < 6 && std::getline(text, line))
     {
-      std::istringstream words(line.substr(0, line.find('#')));
+      std::istringstream words(line.substr(0, comment_start(line)));
       std::string w;
       while(words >> w)
         tokens.push_back(w);
     }
-    if(tokens.empty() || tokens[0].size() < 3 || tokens[0].compare(tokens[0].size() - 3, 3, "OFF") != 0)
-      return std::string();
+    // CGAL 5.5's OFF reader is lenient (a keyword that only contains OFF, "COFF-"; no keyword;
+    // a count with trailing characters) and then reads past its buffers on some such files:
+    // this program accepts the header only in its documented form, checked here.
+    if(tokens.empty())
+      return std::string();  // empty: the reader says so
+    const std::string& keyword_token = tokens[0];
+    const std::size_t off_at = keyword_token.find("OFF");
+    bool keyword_ok = (off_at != std::string::npos && off_at + 3 == keyword_token.size());
+    const std::string off_prefix = keyword_ok ? keyword_token.substr(0, off_at) : std::string();
+    {
+      std::size_t i = 0;  // [ST][C][N][4][n]
+      if(off_prefix.compare(i, 2, "ST") == 0)
+        i += 2;
+      for(const char c : {'C', 'N', '4', 'n'})
+        if(i < off_prefix.size() && off_prefix[i] == c)
+          ++i;
+      keyword_ok = keyword_ok && i == off_prefix.size();
+    }
+    if(!keyword_ok)
+      return "the file does not start with an OFF keyword ([ST][C][N][4][n]OFF), but with '" +
+             keyword_token.substr(0, 16) + "' (corrupt)";
     if(tokens.size() > 1 && tokens[1] == "BINARY")
-      return std::string();  // binary counts: CGAL's scanner reads them; not checked here
-    std::size_t first = (tokens[0].find('n') != std::string::npos) ? 2 : 1;
+      return "binary OFF files are not supported by this program (convert it to ASCII OFF, PLY or OBJ)";
+    std::size_t first = (off_prefix.find('n') != std::string::npos) ? 2 : 1;
     const char* names[2] = {"the header announces vertices:", "the header announces faces:"};
-    for(std::size_t k = 0; k < 2 && first + k < tokens.size(); ++k)
+    for(std::size_t k = 0; k < 2; ++k)
     {
       double count = 0.;
-      if(to_number(tokens[first + k], count) && (count < 0. || count > size))
+      if(first + k >= tokens.size() || !to_number(tokens[first + k], count) || count != std::floor(count))
+        return "the OFF header has no vertex and face counts (corrupt or truncated)";
+      if(count < 0. || count > size)
         return too_large(names[k], count);
     }
     // The face lines (after the vertex lines): a face announcing more vertices than the file
@@ -163,7 +194,7 @@ inline std::string find_impossible_count(const std::string& path, const std::str
       double line_index = -2.;  // the keyword line and the counts line come first
       for(std::string l; std::getline(lines, l);)
       {
-        std::istringstream words(l.substr(0, l.find('#')));
+        std::istringstream words(l.substr(0, comment_start(l)));
         std::string w;
         if(!(words >> w))
           continue;
@@ -193,11 +224,11 @@ inline std::string find_impossible_count(const std::string& path, const std::str
       std::size_t line_number = 0;
       for(std::string l; std::getline(lines, l); ++line_number)
       {
-        std::istringstream words(l.substr(0, l.find('#')));
+        std::istringstream words(l.substr(0, comment_start(l)));
         for(std::string w; words >> w;)
           all.push_back({w, line_number});
       }
-      const std::string key = tokens[0].substr(0, tokens[0].size() - 3);
+      const std::string& key = off_prefix;
       std::size_t at = 1;
       double dimension = 3.;
       if(key.find('n') != std::string::npos)
@@ -211,6 +242,20 @@ inline std::string find_impossible_count(const std::string& path, const std::str
          v_count >= 0. && f_count >= 0. && v_count <= size && f_count <= size)
       {
         at += 3;  // V F E
+        if(at < all.size() && all[at].line == all[at - 1].line)  // CGAL would read them as vertex data
+          return "the OFF counts line has more than the three counts V F E (corrupt)";
+        // every vertex and every face has its own line: fewer lines is a truncated or corrupt
+        // file (CGAL 5.5's scanner then reads past its buffers on some of them)
+        {
+          double data_lines = 0.;
+          for(std::size_t i = at; i < all.size(); ++i)
+            if(i == at || all[i].line != all[i - 1].line)
+              data_lines += 1.;
+          if(data_lines < v_count + f_count)
+            return "the file announces " + std::to_string((long long)v_count) + " vertices and " +
+                   std::to_string((long long)f_count) + " faces but has " + std::to_string((long long)data_lines) +
+                   " lines of data after its counts (truncated or corrupt)";
+        }
         const std::size_t per_vertex = std::size_t(dimension) + ((key.find('4') != std::string::npos) ? 1 : 0) +
                                        ((key.find('N') != std::string::npos) ? std::size_t(dimension) : 0) +
                                        ((key.find("ST") != std::string::npos) ? 2 : 0);
@@ -229,11 +274,14 @@ inline std::string find_impossible_count(const std::string& path, const std::str
         }
         for(std::size_t k = 0; k < std::size_t(f_count) && at < all.size(); ++k)
         {
-          double n = 0.;
-          if(!to_number(all[at].text, n))
+          // the scanner reads the number at the start of the token ("66666666666z0" is 66666666666)
+          char* end = nullptr;
+          const double n = std::strtod(all[at].text.c_str(), &end);
+          if(end == all[at].text.c_str())
             break;
           if(n < 0. || n > size)
-            return "face " + std::to_string(k) + " announces " + all[at].text + " vertices, more than a file of " +
+            return "face " + std::to_string(k) + " announces " +
+                   all[at].text.substr(0, std::size_t(end - all[at].text.c_str())) + " vertices, more than a file of " +
                    std::to_string(bytes.size()) + " bytes can hold (corrupt)";
           at += 1 + std::size_t(n);
           if(at > all.size())
@@ -246,7 +294,7 @@ inline std::string find_impossible_count(const std::string& path, const std::str
     // line without checking that the line has them (a heap overflow on a malformed line).
     // Every vertex line must be numbers: the coordinates (and normals, texture), then 0, 1,
     // 3 or 4 color entries.
-    const std::string keyword = tokens[0].substr(0, tokens[0].size() - 3);
+    const std::string& keyword = off_prefix;
     double vertex_count = 0.;
     if(keyword.find('C') != std::string::npos && keyword.find('n') == std::string::npos &&
        first < tokens.size() && to_number(tokens[first], vertex_count))
@@ -258,7 +306,7 @@ inline std::string find_impossible_count(const std::string& path, const std::str
       std::size_t seen = 0, skip_counts = 1;  // the line of the counts
       for(std::string l; seen < std::size_t(vertex_count) && std::getline(lines, l);)
       {
-        std::istringstream words(l.substr(0, l.find('#')));
+        std::istringstream words(l.substr(0, comment_start(l)));
         std::vector<std::string> w;
         for(std::string t; words >> t;)
           w.push_back(t);
@@ -310,8 +358,8 @@ inline std::string find_impossible_count(const std::string& path, const std::str
         Element e;
         std::string count;
         words >> e.name >> count;
-        if(!to_number(count, e.count))
-          return std::string();
+        if(!to_number(count, e.count))  // CGAL would read the number at its start ("1y": 1)
+          return "the PLY header has an element count that is not a number: '" + count + "' (corrupt)";
         if(e.count < 0. || e.count > size)
           return too_large("the header announces " + e.name + " elements:", e.count);
         elements.push_back(e);
@@ -331,6 +379,9 @@ inline std::string find_impossible_count(const std::string& path, const std::str
         else
           p.type = type;
         words >> p.name;
+        if(ply_type_size(p.type) == 0 || (p.list && ply_type_size(p.count_type) == 0))
+          return "the PLY header has a property of unknown type '" + (p.list ? p.count_type + " " : std::string()) +
+                 p.type + "' (corrupt)";
         elements.back().properties.push_back(p);
       }
       else if(keyword == "end_header")
@@ -338,9 +389,15 @@ inline std::string find_impossible_count(const std::string& path, const std::str
         header_ended = true;
         break;
       }
+      else if(!keyword.empty() && keyword != "ply" && keyword != "comment" && keyword != "obj_info")
+        return "the PLY header has an unknown line starting with '" + keyword + "' (corrupt)";
     }
     if(!header_ended)
-      return std::string();
+      return "the PLY header has no end_header line (corrupt or truncated)";
+    // CGAL 5.5 reads a header without a format line as ASCII (and sizes lists from it)
+    if(format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+      return "the PLY header has no valid format line (expected 'format ascii 1.0', 'format "
+             "binary_little_endian 1.0' or 'format binary_big_endian 1.0')";
 
     // the body: every list count must fit in what is left of the file
     auto list_too_long = [&](const Element& e, const Property& p, double count) {
@@ -365,9 +422,12 @@ inline std::string find_impossible_count(const std::string& path, const std::str
               ++t;
               continue;
             }
-            double count = 0.;
-            if(!to_number(tokens[t++], count))
-              return std::string();
+            // CGAL reads the number at the start of the token ("4000000000x" is 4000000000)
+            const std::string& token = tokens[t++];
+            char* end = nullptr;
+            const double count = std::strtod(token.c_str(), &end);
+            if(end == token.c_str())
+              return "element '" + e.name + "', property '" + p.name + "': a list count that is not a number (corrupt)";
             if(count < 0. || count > double(tokens.size() - t))
               return list_too_long(e, p, count);
             t += std::size_t(count);
@@ -487,6 +547,10 @@ Failure read_mesh(const std::string& path, Mesh& mesh)
   }
   catch(const std::length_error&)
   {
+    read = false;
+  }
+  catch(const std::exception&)  // e.g. a CGAL precondition of the reader (a PLY coordinate
+  {                             // stored as an integer), when CGAL's checks are compiled in
     read = false;
   }
   if(!read)
