@@ -83,6 +83,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "benchmark_support.h"
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -503,24 +505,7 @@ double other_load(const Cpu_sample& a, const Cpu_sample& b)
 // ---------------------------------------------------------------------------------------
 // Meshes
 
-// Why the mesh is not a single disk, or an empty string (as border_comparison).
-std::string not_a_disk(Mesh& mesh)
-{
-  auto fcc = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-  const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(mesh, fcc);
-  if(components != 1)
-    return std::to_string(components) + " components";
-  std::vector<halfedge_descriptor> borders;
-  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(borders));
-  if(borders.empty())
-    return "closed";
-  if(borders.size() > 1)
-    return std::to_string(borders.size()) + " borders";
-  const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
-  if(chi != 1)
-    return "genus " + std::to_string((1 - chi) / 2);
-  return "";
-}
+using mbp_benchmark::not_a_disk;
 
 // 1-to-4 midpoint subdivision: every edge split at its midpoint, every triangle into four.
 // The surface does not move. Returns false on a non-triangle face.

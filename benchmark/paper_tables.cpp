@@ -71,6 +71,8 @@
 
 #include <Eigen/SparseLU>
 
+#include "benchmark_support.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -309,24 +311,7 @@ std::vector<Result> run_methods(Mesh& mesh, const std::vector<Method>& methods, 
   return results;
 }
 
-// Why the mesh is not a single disk, or an empty string.
-std::string not_a_disk(Mesh& mesh)
-{
-  auto fcc = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
-  const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(mesh, fcc);
-  if(components != 1)
-    return std::to_string(components) + " components";
-  std::vector<halfedge_descriptor> borders;
-  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(borders));
-  if(borders.empty())
-    return "closed";
-  if(borders.size() > 1)
-    return std::to_string(borders.size()) + " borders";
-  const long chi = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
-  if(chi != 1)
-    return "genus " + std::to_string((1 - chi) / 2);
-  return "";
-}
+using mbp_benchmark::not_a_disk;
 
 std::string fmt(const char* f, double x)
 {
