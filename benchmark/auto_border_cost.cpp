@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Where the time of the automatic border (AUTOMATIC_BORDER) goes, on one mesh: the plain
 // geodesic method and the automatic border as whole calls, and the pieces of the search, each
 // alone on the patch's one factorization of L_II (median of 5 runs):

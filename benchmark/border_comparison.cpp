@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Compares, on every disk mesh of a directory, CGAL's discrete conformal map (DCP) with the
 // measured border of this package against DCP with CGAL's circular arc-length border.
 // Both solve with the same direct solver (Eigen's SparseLU), so only the border differs.

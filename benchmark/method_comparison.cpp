@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Time, peak memory and distortion of this package's Measured_conformal_parameterizer_3
 // against CGAL's parameterizers, on every disk mesh of a directory: the paper's Tables 1
 // (distortion) and 3 (time), plus the cost of one factorization as a floor.

@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // The paper's Tables 1 and 2 (distortion of the measured boundary methods against DCP, and
 // the four center / distance combinations) on every disk mesh of a directory, with times and
 // the repair report; and (--auto) the automatic border against its members and the circle.

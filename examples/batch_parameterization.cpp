@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // A batch run: every mesh of a folder flattened by Measured_conformal_parameterizer_3, several
 // meshes at a time on a pool of threads, with a progress bar and a summary table.
 //

@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Choosing the policies of Measured_conformal_parameterizer_3: how the center is located,
 // how the border distances are measured, which sparse solver factorizes the systems, and the
 // automatic border. Each configuration flattens the same mesh; the program prints a table of

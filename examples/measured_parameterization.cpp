@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // The command-line program of the package: flattens a disk-like triangle mesh with the
 // measured boundary parameterization of "Measured boundary parameterization based on
 // Poisson's equation" (Measured_conformal_parameterizer_3) and writes the UV layout.

@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // The complete method of the paper on a CGAL::Polyhedron_3: Measured_conformal_parameterizer_3
 // finds the center, measures the border, lays it out as a polar map and solves the discrete
 // conformal interior, with one factorization shared by the first and the last step.

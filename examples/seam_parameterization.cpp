@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Parameterizing a closed surface: the mesh is cut open along seams with CGAL::Seam_mesh,
 // and the measured boundary parameterization maps the cut mesh, whose border runs along
 // both sides of every seam.

@@ -1,4 +1,13 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026  The measured boundary parameterization authors.
+# All rights reserved.
+#
+# This file is part of the measured boundary parameterization package for CGAL.
+#
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Author(s)     : The measured boundary parameterization authors
+#
 # Regenerates the documentation figures in doc/Surface_mesh_parameterization/fig/:
 # configures and builds the figure program (doc/figures/make_figures.cpp) in build-fig/,
 # runs it on the project's meshes (../shared/data/meshes, or MESH_DIR), and turns each

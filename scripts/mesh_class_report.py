@@ -1,4 +1,13 @@
 #!/usr/bin/env python3
+# Copyright (c) 2026  The measured boundary parameterization authors.
+# All rights reserved.
+#
+# This file is part of the measured boundary parameterization package for CGAL.
+#
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Author(s)     : The measured boundary parameterization authors
+#
 """Runs the command-line program on every mesh of some classes of the project's meshes
 (../shared/data/meshes, classified in its PROVENANCE.md) and prints a Markdown table: per mesh
 the outcome (a valid result: exit 0, no flipped face, the OBJ written; or a clear error:

@@ -1,4 +1,13 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026  The measured boundary parameterization authors.
+# All rights reserved.
+#
+# This file is part of the measured boundary parameterization package for CGAL.
+#
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Author(s)     : The measured boundary parameterization authors
+#
 # Hardening checks (called at the end of scripts/run_tests.sh; can be run alone):
 #  1. the test suite and the example programs built with Clang, AddressSanitizer and
 #     UndefinedBehaviorSanitizer (-O1, every finding fatal) in build-asan/, and run by CTest;

@@ -1,4 +1,13 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026  The measured boundary parameterization authors.
+# All rights reserved.
+#
+# This file is part of the measured boundary parameterization package for CGAL.
+#
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Author(s)     : The measured boundary parameterization authors
+#
 # Installs what is missing, builds everything in Release, and runs all tests (CTest).
 # Exits non-zero when any step or any test fails.
 set -euo pipefail

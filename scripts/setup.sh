@@ -1,4 +1,13 @@
 #!/usr/bin/env bash
+# Copyright (c) 2026  The measured boundary parameterization authors.
+# All rights reserved.
+#
+# This file is part of the measured boundary parameterization package for CGAL.
+#
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Author(s)     : The measured boundary parameterization authors
+#
 # Installs what this package needs on Debian 12 (bookworm) and nothing that is already there.
 # Used by the README commands and by .ci/run. Runs apt-get through sudo when not root.
 #

@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // The command-line program (examples/measured_parameterization.cpp), run as a user runs it:
 // its OBJ is the mesh with the library's UVs, its SVG and JSON are complete, and every kind
 // of bad input ends with a message naming the problem, a non-zero exit and no output file.

@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Measured_conformal_parameterizer_3: equality with CGAL's DCP plugged with the measured
 // border, the shared factorization (2 factorizations, 4 back-substitutions), the grounded
 // spring Laplacian, concurrency, solvers, generic meshes, bad input, and the automatic border.

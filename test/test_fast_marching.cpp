@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Fast marching geodesic distances (Kimmel & Sethian 1998) on plain arrays: comparison with
 // the exact distance on flat meshes (convex: Euclidean; L-shape and the non-convex alligator:
 // shortest path around the reflex corners), on meshes made of obtuse triangles, on curved

@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Geodesic distance maps (fast marching, Dijkstra, heat method, exact), the geodesic center
 // locator (BGDM) and the geodesic border distances (MBPGP), and the full matrix of center and
 // distance policies over Surface_mesh, Polyhedron_3 and Seam_mesh.

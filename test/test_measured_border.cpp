@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Measured_border_parameterizer_3 as a drop-in border parameterizer of CGAL's fixed border
 // parameterizers: the polar border map, CGAL's conventions, generic meshes, invariance, and
 // one test per kind of bad input.

@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Real meshes (../shared/data/meshes, or CGAL's data meshes on a clone without it): DCP with
 // the measured border against DCP with CGAL's circular arc-length border, the Poisson
 // distance map's positivity (paper Theorem A1), and Polyhedron_3 against Surface_mesh.

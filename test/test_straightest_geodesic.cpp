@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Straightest geodesics of Lee et al. (2006), the "cutting plane" method behind the paper's
 // MBPSGP (internal/straightest_geodesic.h): straight segments on flat meshes, failures behind
 // the reentrant corner of an L, analytic geodesics of a cylinder and a sphere cap under

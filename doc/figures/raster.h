@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // A small software renderer for the documentation figures: a triangle mesh seen from a
 // chosen direction (orthographic), z-buffered, with smooth Lambert shading, colored either by
 // a checkerboard texture through per-vertex UVs or by a per-vertex scalar (a color map with

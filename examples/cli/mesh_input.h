@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Input of the measured_parameterization program: reading a mesh file with a message that
 // names the problem when it fails, the generated fallback mesh, and the checks that give a
 // precise message before the library sees the mesh.

@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Seams for CGAL::Seam_mesh: reading and checking a CGAL selection file (*.selection.txt),
 // and the topology of a mesh cut along its seams, for messages that say what is wrong.
 // Shared by the programs measured_parameterization and seam_parameterization.

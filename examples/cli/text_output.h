@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Text output of the measured_parameterization program: number formatting, a small JSON
 // writer, and output files that appear only when everything was written (a temporary file
 // beside the target, renamed at the end, removed on failure). No CGAL here.

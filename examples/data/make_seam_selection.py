@@ -1,4 +1,13 @@
 #!/usr/bin/env python3
+# Copyright (c) 2026  The measured boundary parameterization authors.
+# All rights reserved.
+#
+# This file is part of the measured boundary parameterization package for CGAL.
+#
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Author(s)     : The measured boundary parameterization authors
+#
 """Writes a CGAL selection file (*.selection.txt) of seam edges that cut a closed genus-0
 triangle mesh (OFF) into a topological disk: a tree of shortest edge paths through
 `terminals` far-apart vertices.

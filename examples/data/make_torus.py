@@ -1,4 +1,13 @@
 #!/usr/bin/env python3
+# Copyright (c) 2026  The measured boundary parameterization authors.
+# All rights reserved.
+#
+# This file is part of the measured boundary parameterization package for CGAL.
+#
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Author(s)     : The measured boundary parameterization authors
+#
 """Writes the generated torus of the seam_parameterization example and its seams.
 
   make_torus.py [DIRECTORY]

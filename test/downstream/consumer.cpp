@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // Uses the installed headers: the measured border inside CGAL's DCP on a small generated disk.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>

@@ -1,3 +1,12 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
 // libFuzzer target over the input path of the command-line program
 // (examples/measured_parameterization.cpp): the bytes are a mesh file, read and checked by the
 // program's own helpers (examples/cli/mesh_input.h), then, when the mesh is valid and small,

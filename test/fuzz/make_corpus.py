@@ -1,4 +1,13 @@
 #!/usr/bin/env python3
+# Copyright (c) 2026  The measured boundary parameterization authors.
+# All rights reserved.
+#
+# This file is part of the measured boundary parameterization package for CGAL.
+#
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Author(s)     : The measured boundary parameterization authors
+#
 """Writes the seed corpus of fuzz_mesh_input (test/fuzz/corpus/): tiny valid disks in OFF,
 OBJ, PLY (ASCII and binary) and STL (ASCII and binary), and malformed or unsupported meshes
 (NaN and infinite coordinates, out-of-range indices, non-triangle faces, empty and truncated

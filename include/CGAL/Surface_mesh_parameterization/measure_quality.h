@@ -1,7 +1,11 @@
-// Copyright (c) 2026 The measured boundary parameterization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
 //
 // This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURE_QUALITY_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURE_QUALITY_H
