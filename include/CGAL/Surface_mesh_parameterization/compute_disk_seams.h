@@ -324,6 +324,53 @@ inline int longest_border_loop(const Indexed_surface& s)
   return best;
 }
 
+// Total length of the cut.
+inline double cut_length(const Indexed_surface& s, const std::vector<char>& cut)
+{
+  double length = 0.;
+  for(std::size_t e = 0; e < cut.size(); ++e)
+    length += cut[e] ? s.edge_lengths[e] : 0.;
+  return length;
+}
+
+// The greedy system of loops or arcs, pruned and shortened, into `cut` (all zero); returns
+// the number of loops or arcs. On a closed surface, the greedy system is the shortest
+// system of loops through its root (Erickson and Whittlesey), and the root matters: the
+// system is computed from vertex 0, then from one end of each closing edge of that system
+// (the point of its loop farthest from the root, where a better root often lies: on a torus
+// rooted on the outer equator, the meridian's far point is on the inner equator, the root of
+// the shortest system), at most 8 roots; the shortest system is kept.
+inline int shortest_system(const Indexed_surface& s, const Disk_seams_options& options,
+                           const std::vector<char>& terminal, std::vector<char>& cut, int& shortened)
+{
+  auto system_from = [&](int root, std::vector<char>& c, std::vector<int>* closing, int& replaced) {
+    const int loops = greedy_system_of_cuts(s, root, c, closing);
+    prune_cut(s, terminal, c);
+    replaced = options.shorten ? shorten_cut(s, terminal, 1, options.shortening_passes, c) : 0;
+    return loops;
+  };
+  std::vector<int> closing;
+  const int loops = system_from(0, cut, &closing, shortened);
+  if(!s.border_loops.empty())
+    return loops;
+  double best = cut_length(s, cut);
+  std::vector<char> other;
+  for(std::size_t k = 0; k < closing.size() && k < 7; ++k)
+  {
+    other.assign(cut.size(), 0);
+    int replaced = 0;
+    system_from(s.edge_vertices[static_cast<std::size_t>(closing[k])][0], other, nullptr, replaced);
+    const double length = cut_length(s, other);
+    if(length < best)
+    {
+      best = length;
+      cut.swap(other);
+      shortened = replaced;
+    }
+  }
+  return loops;
+}
+
 // The cut on the indexed surface: the greedy system of loops or arcs, the cones joined to it,
 // pruned and shortened. `cut` gets one flag per edge, `cones` the cone vertices.
 template <class SolverTraits, class TriangleMesh>
@@ -335,11 +382,11 @@ Disk_seams_problem cut_to_disk(const Indexed_surface& s, const Disk_seams_option
   const std::size_t b = s.border_loops.size();
   const int genus = s.genus();
   const bool join = options.join_holes || genus > 0;
-  cut.assign(static_cast<std::size_t>(s.number_of_edges()), 0);
   std::vector<char> terminal(n, 0);
+  const long holes = join ? 0 : (b >= 2 ? long(b) - 1 : 0);
+  cut.assign(static_cast<std::size_t>(s.number_of_edges()), 0);
   if(genus > 0 || (join && b >= 2))
-    report.number_of_loops = greedy_system_of_cuts(s, 0, cut);
-  prune_cut(s, terminal, cut);
+    report.number_of_loops = shortest_system(s, options, terminal, cut, report.shortened_paths);
 
   const int count = (options.number_of_cones >= 0) ? options.number_of_cones
                     : (b == 0 && genus == 0)        ? Disk_seams_options::default_number_of_cones
@@ -378,9 +425,8 @@ Disk_seams_problem cut_to_disk(const Indexed_surface& s, const Disk_seams_option
       return CUT_NOT_A_DISK;
     prune_cut(s, terminal, cut);
   }
-  const long holes = join ? 0 : (b >= 2 ? long(b) - 1 : 0);
-  if(options.shorten)
-    report.shortened_paths = shorten_cut(s, terminal, 1 - holes, options.shortening_passes, cut);
+  if(options.shorten && !cones.empty())
+    report.shortened_paths += shorten_cut(s, terminal, 1 - holes, options.shortening_passes, cut);
   report.holes_joined = join && b >= 2;
   if(!is_disk_cut(s, cut, 1 - holes))
     return CUT_NOT_A_DISK;

@@ -192,13 +192,15 @@ private:
 // T is the shortest path tree (forest, with border) from the base; C* the maximum spanning
 // tree of the dual graph (faces joined across the interior edges not in T), where the weight
 // of an edge uv is the length d(u) + |uv| + d(v) of the loop or arc that it closes with T;
-// every interior edge in neither gives one loop or arc (Eppstein's tree-cotree
+// every interior edge in neither (a closing edge, listed in `closing_edges`) gives one loop or
+// arc (Eppstein's tree-cotree
 // decomposition; with this T and C*, Erickson and Whittlesey's greedy generators). With a
 // border, the count is that of the surface whose border vertices are contracted to one vertex
 // and whose border edges are dropped: T has V_int edges, C* has F - 1, and the
 // E_int - V_int - F + 1 = 1 - chi = 2g + b - 1 others are the arcs. The surface minus T, the
 // arcs and the border is the union of the faces glued across C*: an open disk.
-inline int greedy_system_of_cuts(const Indexed_surface& s, int root, std::vector<char>& cut)
+inline int greedy_system_of_cuts(const Indexed_surface& s, int root, std::vector<char>& cut,
+                                 std::vector<int>* closing_edges = nullptr)
 {
   const bool with_border = !s.border_loops.empty();
   std::vector<Path_source> sources;
@@ -242,6 +244,8 @@ inline int greedy_system_of_cuts(const Indexed_surface& s, int root, std::vector
     if(faces.unite(static_cast<std::size_t>(ef[0]), static_cast<std::size_t>(ef[1])))
       continue;  // a cotree edge
     ++loops;
+    if(closing_edges)
+      closing_edges->push_back(d.second);
     cut[static_cast<std::size_t>(d.second)] = 1;
     const std::array<int, 2>& ev = s.edge_vertices[static_cast<std::size_t>(d.second)];
     mark_tree_path(s, tree, ev[0], cut);
