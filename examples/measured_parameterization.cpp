@@ -13,7 +13,7 @@
 //
 //   measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]
 //                             [--center=poisson|geodesic[:METHOD]|vertex:N]
-//                             [--distance=poisson|METHOD|straightest] [--border=measured|auto]
+//                             [--distance=poisson|METHOD|straightest] [--border=auto|conformal|measured|circle]
 //                             [--solver=cholmod|ldlt] [--svg=FILE] [--json] [--no-repair] [--help]
 //
 // Reads OFF, OBJ, PLY or STL (default: a real mesh of the project's data, or a generated
@@ -43,6 +43,7 @@
 #include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
 #endif
 
+#include "cli/file_output.h"
 #include "cli/mesh_input.h"
 #include "cli/options.h"
 #include "cli/seam_selection.h"
@@ -52,11 +53,13 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -203,6 +206,7 @@ double seconds_since(std::chrono::steady_clock::time_point start)
 struct Parameterization_result
 {
   SMP::Error_code status = SMP::ERROR_WRONG_PARAMETER;
+  bool has_center = false;              // --border=conformal and circle locate no center
   std::size_t center = 0;               // input vertex
   std::size_t border_vertices = 0;      // of the longest border loop
   bool border_convex = false;
@@ -216,18 +220,18 @@ struct Parameterization_result
   bool repaired = false, mean_value_interior = false;
   double blend = 0., repair_seconds = 0.;
   int repair_candidates = 0;
-  // --border=auto: the borders tried, in order, and the kept one (-1: none was valid, the
-  // measured border was repaired)
+  // the layouts tried, in order (the repair's included), and the kept one
   struct Candidate
   {
-    std::string kind;  // circle, or measured:<distance> blended toward the circle
+    std::string kind;  // circle, conformal, or measured:<distance>, blended toward a convex border
     double blend = 0.;
+    bool mean_value = false;  // mean value interior (a repair)
     bool valid = false;
     double angle_distortion = 0.;
   };
   std::vector<Candidate> border_candidates;
   int chosen_candidate = -1;
-  double search_seconds = 0.;
+  double conformal_border_seconds = 0.;
 };
 
 // A parameterized mesh in the numbering of the output files, the same for a mesh and for a
@@ -261,8 +265,10 @@ Parameterization_result run_parameterization(const TriangleMesh& tm,
   Parameterizer parameterizer(locator, distance);
   if(!options.repair)
     parameterizer.set_repair(Parameterizer::NO_REPAIR);
-  if(options.auto_border)
-    parameterizer.set_border_choice(Parameterizer::AUTOMATIC_BORDER);
+  parameterizer.set_border_choice(options.border == "auto"        ? Parameterizer::AUTOMATIC_BORDER
+                                  : options.border == "conformal" ? Parameterizer::CONFORMAL_BORDER
+                                  : options.border == "circle"    ? Parameterizer::CIRCULAR_BORDER
+                                                                  : Parameterizer::MEASURED_BORDER);
   Parameterization_result r;
   // the vertex index map is not used by the parameterizer (it indexes the component itself)
   r.status = parameterizer.parameterize(tm, bhd, uvmap, get(CGAL::dynamic_vertex_property_t<int>(), tm),
@@ -273,16 +279,20 @@ Parameterization_result run_parameterization(const TriangleMesh& tm,
     r.first_unreachable = input_index(tm, straightest.vertex);
 
   const typename Parameterizer::Report& report = parameterizer.last_report();
-  if(parameterizer.center() != boost::graph_traits<TriangleMesh>::null_vertex())
+  r.has_center = parameterizer.center() != boost::graph_traits<TriangleMesh>::null_vertex();
+  if(r.has_center)
     r.center = input_index(tm, parameterizer.center());
-  border = parameterizer.border_parameterizer().border_vertices();
+  border.clear();
+  if(bhd != boost::graph_traits<TriangleMesh>::null_halfedge() && is_border(bhd, tm))
+    for(auto h : CGAL::halfedges_around_face(bhd, tm))
+      border.push_back(source(h, tm));
   r.border_vertices = border.size();
-  r.border_convex = parameterizer.border_parameterizer().is_border_convex();
   r.preparation = report.preparation_seconds;
   r.center_time = report.center_seconds;
   r.distances = report.distance_seconds;
   r.border_map = report.border_map_seconds;
   r.interior = report.interior_seconds;
+  r.conformal_border_seconds = report.conformal_border_seconds;
   r.output = report.output_seconds;
   r.total = report.total_seconds;
   r.factorizations = report.statistics.factorizations;
@@ -296,20 +306,27 @@ Parameterization_result run_parameterization(const TriangleMesh& tm,
   r.blend = report.blend;
   r.repair_seconds = report.repair_seconds;
   r.repair_candidates = report.repair_candidates;
-  const std::string second = report.second_border_is_poisson ? "poisson" : "fast-marching";
   for(const typename Parameterizer::Border_candidate& c : report.border_candidates)
   {
     Parameterization_result::Candidate k;
-    k.kind = (c.family == Parameterizer::CIRCLE)          ? std::string("circle")
-             : (c.family == Parameterizer::POLICY_BORDER) ? "measured:" + options.distance
-                                                          : "measured:" + second;
+    k.kind = (c.family == Parameterizer::CIRCLE)      ? std::string("circle")
+             : (c.family == Parameterizer::CONFORMAL) ? std::string("conformal")
+                                                      : "measured:" + options.distance;
     k.blend = c.blend;
+    k.mean_value = c.mean_value_interior;
     k.valid = c.valid;
     k.angle_distortion = c.objective;
     r.border_candidates.push_back(k);
   }
   r.chosen_candidate = report.chosen_candidate;
-  r.search_seconds = report.search_seconds;
+  // the kept border polygon: convex?
+  if(r.chosen_candidate >= 0 && r.status == SMP::OK)
+  {
+    std::vector<Eigen::Vector2d> polygon;
+    for(auto v : border)
+      polygon.emplace_back(get(uvmap, v).x(), get(uvmap, v).y());
+    r.border_convex = SMP::internal::is_strictly_convex_clockwise(polygon);
+  }
   return r;
 }
 
@@ -473,15 +490,18 @@ mbp_cli::Failure parameterize_mesh(const TriangleMesh& tm, const Mesh& mesh, con
   return mbp_cli::Failure();
 }
 
-// The border --border=auto kept, for the summary: "measured:poisson t 0.38 (9 borders tried)".
-std::string auto_border_summary(const Parameterization_result& result)
+// The border kept, for the summary: "conformal (3 layouts tried)", "measured:poisson t 0.38,
+// mean value interior (9 layouts tried)".
+std::string border_summary(const Parameterization_result& result)
 {
-  const std::string tried = " (" + std::to_string(result.border_candidates.size()) + " borders tried)";
+  const std::size_t n = result.border_candidates.size();
+  const std::string tried = " (" + std::to_string(n) + (n == 1 ? " layout" : " layouts") + " tried)";
   if(result.chosen_candidate < 0)
-    return "no valid member, measured border repaired" + tried;
+    return "none valid" + tried;
   const Parameterization_result::Candidate& c =
     result.border_candidates[static_cast<std::size_t>(result.chosen_candidate)];
-  return c.kind + (c.kind == "circle" ? std::string() : " t " + mbp_cli::rounded(c.blend, 3)) + tried;
+  return c.kind + (c.kind == "circle" || c.blend == 0. ? std::string() : " t " + mbp_cli::rounded(c.blend, 3)) +
+         (c.mean_value ? ", mean value interior" : "") + tried;
 }
 
 // A line of text for a comment of the OBJ file: no line breaks or other control characters.
@@ -539,6 +559,28 @@ int main(int argc, char** argv)
     std::cerr << "error: " << where << ": " << f.message() << "\n";
     return exit_failure;
   };
+
+  // Output names, checked before anything is read or computed: no output may be an input or
+  // another output, an existing output must be a regular file (file_output.h).
+  if(options.output.empty())
+    options.output = (generated ? std::string("curved_disk") : fs::path(options.input).stem().string()) + "_uv.obj";
+  mbp_cli::Output_files files;
+  {
+    if(!generated)
+      files.add_input(options.input, "the input");
+    if(!options.seams.empty())
+      files.add_input(options.seams, "the seam file");
+    bool usage = false;
+    std::string error = files.add_target(options.output, "OUTPUT", usage);
+    if(error.empty() && !options.svg.empty())
+      error = files.add_target(options.svg, "--svg", usage);
+    if(!error.empty())
+    {
+      std::cerr << "error: " << error << "\n";
+      return usage ? exit_usage : exit_failure;
+    }
+  }
+
   if(!generated)
   {
     const mbp_cli::Failure f = mbp_cli::read_mesh(options.input, mesh);
@@ -547,26 +589,16 @@ int main(int argc, char** argv)
   }
   const double read_seconds = seconds_since(start);
 
-  // Output names, checked before the parameterization.
-  if(options.output.empty())
-    options.output = (generated ? std::string("curved_disk") : fs::path(options.input).stem().string()) + "_uv.obj";
-  if(!options.svg.empty())
-  {
-    std::error_code ec_svg, ec_obj;
-    const fs::path svg = fs::weakly_canonical(options.svg, ec_svg), obj = fs::weakly_canonical(options.output, ec_obj);
-    if(options.svg == options.output || (!ec_svg && !ec_obj && svg == obj))
-    {
-      std::cerr << "error: OUTPUT and --svg name the same file '" << options.output << "'\n";
-      return exit_usage;
-    }
-  }
-
   // ------------------------------------------------------------------ checks
   {
     const mbp_cli::Failure f = mbp_cli::check_mesh(mesh);
     if(f.failed())
       return fail(f);
   }
+
+  // coordinates so large (or small) that squared lengths overflow are scaled by a power of
+  // two while the library runs (exact; the output has the input's coordinates)
+  mbp_cli::Scaled_coordinates<Mesh> scaled(mesh);
 
   // ------------------------------------------------------------------ parameterization
   // With seams, of the mesh cut along them: a Seam_mesh over `mesh`. Both give a `Uv_layout`.
@@ -577,7 +609,9 @@ int main(int argc, char** argv)
   Uv_layout layout;
   if(with_seams)
   {
-    const std::string error = mbp_cli::read_seam_selection(options.seams, mesh, seams);
+    std::string error = mbp_cli::check_regular_input(options.seams);
+    if(error.empty())
+      error = mbp_cli::read_seam_selection(options.seams, mesh, seams);
     if(!error.empty())
     {
       std::cerr << "error: " << options.seams << ": " << error << "\n";
@@ -614,6 +648,7 @@ int main(int argc, char** argv)
     if(f.failed())
       return fail(f);
   }
+  scaled.restore();
   const std::size_t isolated = num_vertices(mesh) - layout.vertices.size();
   const SMP::Parameterization_quality& quality = layout.quality;
 
@@ -622,31 +657,41 @@ int main(int argc, char** argv)
   const std::string mesh_name = generated ? std::string("curved disk (generated)")
                                           : fs::path(options.input).filename().string();
   const std::size_t center_index = result.center;
-  std::string obj;
-  obj.reserve(96 * layout.vertices.size() + 48 * layout.uv.size() + 48 * layout.faces.size());
-  obj += "# UV layout by measured_parameterization: measured boundary parameterization (center: " +
-         options.center_name() + ", border distances: " + options.distance + "), discrete conformal interior\n";
-  if(options.auto_border)
-    obj += "# border: --border=auto, " + auto_border_summary(result) + "\n";
-  obj += "# input: " + one_line(generated ? mesh_name : options.input) + "\n";
+  // the OBJ, written straight into its temporary file
+  mbp_cli::Buffered_writer* obj = files.begin(0);
+  if(obj == nullptr)
+  {
+    std::cerr << "error: " << files.error() << "\n";
+    return exit_failure;
+  }
+  *obj << "# UV layout by measured_parameterization: measured boundary parameterization (center: "
+       << options.center_name() << ", border distances: " << options.distance << "), discrete conformal interior\n";
+  *obj << "# border: --border=" << options.border << ", kept " << border_summary(result) << "\n";
+  *obj << "# input: " << one_line(generated ? mesh_name : options.input) << "\n";
   if(with_seams)
-    obj += "# cut along " + std::to_string(seams.size()) + " seam edges (" + one_line(options.seams) +
-           "): one 'vt' per side of a seam, faces 'f v/vt'\n";
-  obj += "# " + std::to_string(layout.vertices.size()) + " vertices, " + std::to_string(layout.faces.size()) +
-         " faces, center: input vertex " + std::to_string(center_index) + " (0-based)\n";
+    *obj << "# cut along " << seams.size() << " seam edges (" << one_line(options.seams)
+         << "): one 'vt' per side of a seam, faces 'f v/vt'\n";
+  *obj << "# " << layout.vertices.size() << " vertices, " << layout.faces.size() << " faces"
+       << (result.has_center ? ", center: input vertex " + std::to_string(center_index) + " (0-based)" : std::string())
+       << "\n";
   for(std::size_t i : layout.vertices)
   {
     const Point_3& p = mesh.point(vertex_descriptor(static_cast<Mesh::size_type>(i)));
-    obj += "v " + mbp_cli::exact(p.x()) + " " + mbp_cli::exact(p.y()) + " " + mbp_cli::exact(p.z()) + "\n";
+    *obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
   }
   for(const std::array<double, 2>& q : layout.uv)
-    obj += "vt " + mbp_cli::exact(q[0]) + " " + mbp_cli::exact(q[1]) + "\n";
+    *obj << "vt " << q[0] << ' ' << q[1] << '\n';
   for(const std::array<std::size_t, 3>& t : layout.faces)
   {
-    obj += "f";
+    *obj << 'f';
     for(std::size_t u : t)
-      obj += " " + std::to_string(layout.uv_vertex[u] + 1) + "/" + std::to_string(u + 1);
-    obj += "\n";
+      *obj << ' ' << layout.uv_vertex[u] + 1 << '/' << u + 1;
+    *obj << '\n';
+  }
+  if(!files.end(0))
+  {
+    std::cerr << "error: " << files.error() << "\n";
+    return exit_failure;
   }
 
   std::string svg;
@@ -661,7 +706,7 @@ int main(int argc, char** argv)
       picture.face_flipped.push_back(!(fq.uv_area > 0.));
     }
     picture.border = layout.border;
-    picture.center = layout.center;
+    picture.center = result.has_center ? layout.center : std::numeric_limits<std::size_t>::max();
     picture.center_label = "center (vertex " + std::to_string(center_index) + ")";
     picture.title = mesh_name;
     picture.caption.push_back(std::to_string(layout.vertices.size()) + " vertices, " +
@@ -679,15 +724,24 @@ int main(int argc, char** argv)
   }
 
   {
-    mbp_cli::Output_files files;
-    std::string error = files.add(options.output, obj);
-    if(error.empty() && !options.svg.empty())
-      error = files.add(options.svg, svg);
-    if(error.empty())
-      error = files.commit();
-    if(!error.empty())
+    bool written = true;
+    if(!options.svg.empty())
     {
-      std::cerr << "error: " << error << "\n";
+      mbp_cli::Buffered_writer* out = files.begin(1);
+      written = out != nullptr;
+      if(written)
+      {
+        *out << svg;
+        written = files.end(1);
+      }
+    }
+    // for the tests of interrupted and failed runs (test_cli): stop with every output written
+    // to its temporary file, before any is published
+    if(written && std::getenv("MBP_CLI_TEST_STOP_BEFORE_PUBLISH") != nullptr)
+      std::raise(SIGSTOP);
+    if(!written || !files.publish())
+    {
+      std::cerr << "error: " << files.error() << "\n";
       return exit_failure;
     }
   }
@@ -702,7 +756,7 @@ int main(int argc, char** argv)
               << (result.border_convex ? "" : " (the measured border is not convex)") << "\n";
 
   const Point_3& c = mesh.point(vertex_descriptor(static_cast<Mesh::size_type>(center_index)));
-  const std::array<double, 2>& cuv = layout.uv[layout.center];
+  const std::array<double, 2>& cuv = layout.uv[result.has_center ? layout.center : 0];
   if(options.json)
   {
     mbp_cli::Json_writer j;
@@ -721,34 +775,31 @@ int main(int argc, char** argv)
     j.member("solver", mbp_cli::solver_name(options.solver));
     j.member("center_locator", options.fixed_center ? std::string("vertex") : options.center);
     j.member("border_distance", options.distance);
-    j.begin_object("border_choice").member("mode", options.auto_border ? "auto" : "measured");
-    if(options.auto_border)
+    j.begin_object("border_choice").member("mode", options.border);
+    if(result.chosen_candidate >= 0)
     {
-      if(result.chosen_candidate >= 0)
-      {
-        const Parameterization_result::Candidate& c =
-          result.border_candidates[static_cast<std::size_t>(result.chosen_candidate)];
-        j.begin_object("chosen")
-           .member("index", result.chosen_candidate)
-           .member("kind", c.kind)
-           .member("blend", c.blend)
-           .member("center", center_index)
-           .member("angle_distortion", c.angle_distortion)
-           .end_object();
-      }
-      else
-        j.null_member("chosen");  // no valid member: the measured border, repaired
-      j.member("seconds", result.search_seconds);
-      j.begin_array("candidates", false);
-      for(const Parameterization_result::Candidate& c : result.border_candidates)
-        j.begin_object()
-           .member("kind", c.kind)
-           .member("blend", c.blend)
-           .member("valid", c.valid)
-           .member("angle_distortion", c.angle_distortion)  // null when not valid
-           .end_object();
-      j.end_array();
+      const Parameterization_result::Candidate& c =
+        result.border_candidates[static_cast<std::size_t>(result.chosen_candidate)];
+      j.begin_object("chosen")
+         .member("index", result.chosen_candidate)
+         .member("kind", c.kind)
+         .member("blend", c.blend)
+         .member("mean_value_interior", c.mean_value)
+         .member("angle_distortion", c.angle_distortion)
+         .end_object();
     }
+    else
+      j.null_member("chosen");
+    j.begin_array("candidates", false);
+    for(const Parameterization_result::Candidate& c : result.border_candidates)
+      j.begin_object()
+         .member("kind", c.kind)
+         .member("blend", c.blend)
+         .member("mean_value_interior", c.mean_value)
+         .member("valid", c.valid)
+         .member("angle_distortion", c.angle_distortion)  // null when not valid
+         .end_object();
+    j.end_array();
     j.end_object();
     j.member("vertices", layout.vertices.size());
     j.member("faces", layout.faces.size());
@@ -764,17 +815,22 @@ int main(int argc, char** argv)
        .member("length", border_length)
        .member("convex", result.border_convex)
        .end_object();
-    j.begin_object("center").member("index", center_index);
-    j.begin_array("point").element(c.x()).element(c.y()).element(c.z()).end_array();
-    j.begin_array("uv").element(cuv[0]).element(cuv[1]).end_array();
-    j.end_object();
+    if(result.has_center)
+    {
+      j.begin_object("center").member("index", center_index);
+      j.begin_array("point").element(c.x()).element(c.y()).element(c.z()).end_array();
+      j.begin_array("uv").element(cuv[0]).element(cuv[1]).end_array();
+      j.end_object();
+    }
+    else
+      j.null_member("center");
     j.begin_object("times")
        .member("preparation", result.preparation)
        .member("center", result.center_time)
        .member("distances", result.distances)
        .member("border_map", result.border_map)
-       .member("border_search", result.search_seconds)  // --border=auto (interior solves included)
-       .member("interior", result.interior)
+       .member("conformal_border", result.conformal_border_seconds)
+       .member("interior", result.interior)  // every layout tried before repair
        .member("output", result.output)
        .member("total", result.total)
        .end_object();
@@ -820,14 +876,15 @@ int main(int argc, char** argv)
                                  std::to_string(layout.uv.size()) + " UVs"
                              : std::string())
               << " | border " << result.border_vertices << " vertices, length " << rounded(border_length)
-              << " | center " << center_index << " (" << options.center_name() << ")"
-              << " | distances " << options.distance
-              << (options.auto_border ? " | border auto: " + auto_border_summary(result) : std::string())
+              << (result.has_center ? " | center " + std::to_string(center_index) + " (" + options.center_name() + ")" +
+                                        " | distances " + options.distance
+                                    : std::string())
+              << " | border " << options.border << ": " << border_summary(result)
               << " | seconds: preparation " << rounded(result.preparation, 3) << ", center "
               << rounded(result.center_time, 3) << ", distances " << rounded(result.distances, 3)
               << ", border map " << rounded(result.border_map, 3)
-              << (options.auto_border ? ", border search " + rounded(result.search_seconds, 3) : std::string())
-              << ", interior " << rounded(result.interior, 3)
+              << ", conformal border " << rounded(result.conformal_border_seconds, 3)
+              << ", layouts " << rounded(result.interior, 3)
               << ", total " << rounded(result.total, 3)
               << " | " << mbp_cli::solver_name(options.solver) << ": " << result.factorizations
               << " factorizations, " << result.back_substitutions << " back-substitutions"

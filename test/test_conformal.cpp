@@ -25,6 +25,7 @@
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
+#include <CGAL/Surface_mesh_parameterization/Conformal_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_center_locator.h>
@@ -64,10 +65,10 @@ Mesh make(const mbp_test::Soup& soup)
   return m;
 }
 
-Mesh read(const std::string& name)
+Mesh read(mbp_test::Tier tier, const std::string& name)
 {
   Mesh m;
-  mbp_test::read_mesh(mbp_test::require_mesh(name), m);
+  mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), m);
   return m;
 }
 
@@ -88,22 +89,25 @@ double relative_difference(const Mesh& m, UV_map a, UV_map b)
   return diff / scale;
 }
 
-std::vector<std::string> real_meshes()
+std::vector<std::string> real_meshes(mbp_test::Tier tier)
 {
-  if(mbp_test::mesh_set() == "shared")
+  if(tier == mbp_test::Tier::extended)
     return {"matthew_nefertiti.off", "lilium.obj", "snail.obj", "mask.off"};
   return {"nefertiti.off", "mushroom.off", "patch-20.off"};
 }
 
 } // namespace
 
-BOOST_AUTO_TEST_CASE(equals_cgal_dcp_with_the_measured_border_and_a_direct_solver)
+MBP_TIERED_TEST_CASE(equals_cgal_dcp_with_the_measured_border_and_a_direct_solver)
 {
   std::vector<std::pair<std::string, Mesh> > meshes;
-  meshes.emplace_back("bumpy disk", make(mbp_test::bumpy_disk()));
-  meshes.emplace_back("L-shape", make(mbp_test::l_shape()));
-  for(const std::string& name : real_meshes())
-    meshes.emplace_back(name, read(name));
+  if(tier == mbp_test::Tier::core)
+  {
+    meshes.emplace_back("bumpy disk", make(mbp_test::bumpy_disk()));
+    meshes.emplace_back("L-shape", make(mbp_test::l_shape()));
+  }
+  for(const std::string& name : real_meshes(tier))
+    meshes.emplace_back(name, read(tier, name));
   for(auto& named : meshes)
   {
     Mesh& m = named.second;
@@ -182,11 +186,11 @@ BOOST_AUTO_TEST_CASE(grounded_spring_laplacian_gives_the_poisson_distance_map)
   }
 }
 
-BOOST_AUTO_TEST_CASE(concurrency_does_not_change_the_result)
+MBP_TIERED_TEST_CASE(concurrency_does_not_change_the_result)
 {
-  for(const std::string& name : real_meshes())
+  for(const std::string& name : real_meshes(tier))
   {
-    Mesh m = read(name);
+    Mesh m = read(tier, name);
     UV_map a = new_uv(m, "v:a"), b = new_uv(m, "v:b");
     Conformal concurrent, sequential;
     sequential.use_concurrency(false);
@@ -197,9 +201,9 @@ BOOST_AUTO_TEST_CASE(concurrency_does_not_change_the_result)
   }
 }
 
-BOOST_AUTO_TEST_CASE(every_solver_gives_the_same_parameterization)
+MBP_TIERED_TEST_CASE(every_solver_gives_the_same_parameterization)
 {
-  Mesh m = read(real_meshes()[0]);
+  Mesh m = read(tier, real_meshes(tier)[0]);
   UV_map ldlt = new_uv(m, "v:ldlt"), lu = new_uv(m, "v:lu");
   Conformal a;
   SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
@@ -222,11 +226,11 @@ BOOST_AUTO_TEST_CASE(every_solver_gives_the_same_parameterization)
 #endif
 }
 
-BOOST_AUTO_TEST_CASE(result_is_valid_and_better_than_the_circle_on_open_patches)
+MBP_TIERED_TEST_CASE(result_is_valid_and_better_than_the_circle_on_open_patches)
 {
-  for(const std::string& name : real_meshes())
+  for(const std::string& name : real_meshes(tier))
   {
-    Mesh m = read(name);
+    Mesh m = read(tier, name);
     UV_map uv = new_uv(m, "v:uv"), circle = new_uv(m, "v:circle");
     Conformal conformal;
     BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, mbp_test::longest_border(m), uv), SMP::OK);
@@ -361,9 +365,9 @@ double unrepaired_angle_distortion(Mesh& m, Parameterizer p, const std::string& 
                            : std::numeric_limits<double>::infinity();
 }
 
-std::vector<std::string> automatic_border_meshes()
+std::vector<std::string> automatic_border_meshes(mbp_test::Tier tier)
 {
-  if(mbp_test::mesh_set() == "shared")  // open patches, and nearly closed shapes where the circle wins
+  if(tier == mbp_test::Tier::extended)  // open patches, and nearly closed shapes where the circle wins
     return {"matthew_nefertiti.off", "lilium.obj", "inspired_mesh.obj", "snail.obj", "venus.off", "lion-head.off",
             "alligator.obj"};
   return {"nefertiti.off", "mushroom.off", "patch-20.off"};
@@ -371,12 +375,12 @@ std::vector<std::string> automatic_border_meshes()
 
 } // namespace
 
-BOOST_AUTO_TEST_CASE(automatic_border_is_never_worse_than_its_members)
+MBP_TIERED_TEST_CASE(automatic_border_is_never_worse_than_its_members)
 {
-  for(const std::string& name : automatic_border_meshes())
+  for(const std::string& name : automatic_border_meshes(tier))
     BOOST_TEST_CONTEXT(name)
     {
-      Mesh m = read(name);
+      Mesh m = read(tier, name);
       UV_map uv = new_uv(m, "v:auto"), circle_uv = new_uv(m, "v:circle");
       Conformal automatic;
       automatic.set_border_choice(Conformal::AUTOMATIC_BORDER);
@@ -386,26 +390,34 @@ BOOST_AUTO_TEST_CASE(automatic_border_is_never_worse_than_its_members)
       BOOST_TEST(q.flipped_faces == 0u);
       BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
 
-      // the references, computed independently: CGAL's DCP with its arc-length circle, and
-      // this package's Poisson and fast marching measured borders without repair
+      // the references, computed independently: CGAL's DCP with its arc-length circle and
+      // with the drop-in conformal border, and this package's Poisson measured border
+      // without repair
       SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh>, LU> dcp;
       BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, mbp_test::longest_border(m), circle_uv), SMP::OK);
       const double circle = SMP::measure_quality(m, faces(m), circle_uv).angle_distortion;
       const double poisson = unrepaired_angle_distortion(m, Conformal(), "v:poisson");
-      const double geodesic = unrepaired_angle_distortion(m, Conformal_fm(), "v:fm");
+      UV_map conformal_uv = new_uv(m, "v:conformal");
+      SMP::Conformal_border_parameterizer_3<Mesh> conformal_border;
+      SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Conformal_border_parameterizer_3<Mesh>, LU>
+        conformal_dcp(conformal_border);
+      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal_dcp, mbp_test::longest_border(m), conformal_uv), SMP::OK);
+      const double conformal = SMP::is_one_to_one_uv_map(m, faces(m), conformal_uv)
+                                 ? SMP::measure_quality(m, faces(m), conformal_uv).angle_distortion
+                                 : std::numeric_limits<double>::infinity();
       BOOST_TEST_MESSAGE(name << ": auto " << q.angle_distortion << ", circle " << circle << ", Poisson " << poisson
-                              << ", fast marching " << geodesic << ", " << report.border_candidates.size()
+                              << ", conformal " << conformal << ", " << report.border_candidates.size()
                               << " candidates");
       const double slack = 1e-9 * circle;
       BOOST_TEST(q.angle_distortion <= circle + slack);
       BOOST_TEST(q.angle_distortion <= poisson + slack);
-      BOOST_TEST(q.angle_distortion <= geodesic + slack);
+      BOOST_TEST(q.angle_distortion <= conformal + slack);
 
-      // the report: a bounded search, the circle and both pure measured borders among the
-      // candidates with the distortions computed above, the kept one the best valid one
+      // the report: a bounded search, the circle, the measured border and the conformal
+      // border among the candidates with the distortions computed above, the kept one the
+      // best valid one
       BOOST_TEST(report.border_candidates.size() <= 15u);
       BOOST_REQUIRE(report.chosen_candidate >= 0);
-      BOOST_TEST(!report.second_border_is_poisson);
       int members = 0;
       double best = std::numeric_limits<double>::infinity();
       for(const Conformal::Border_candidate& c : report.border_candidates)
@@ -419,31 +431,32 @@ BOOST_AUTO_TEST_CASE(automatic_border_is_never_worse_than_its_members)
           BOOST_TEST(c.valid);
           BOOST_TEST(std::abs(c.objective - circle) <= 1e-7 * circle);
         }
-        if(c.family == Conformal::POLICY_BORDER && c.blend == 0.)
+        if(c.family == Conformal::MEASURED && c.blend == 0.)
         {
           ++members;
           BOOST_TEST((c.valid ? std::abs(c.objective - poisson) <= 1e-7 * poisson : !std::isfinite(poisson)));
         }
-        if(c.family == Conformal::SECOND_BORDER && c.blend == 0.)
+        if(c.family == Conformal::CONFORMAL && c.blend == conformal_border.last_record().blend)
         {
           ++members;
-          BOOST_TEST((c.valid ? std::abs(c.objective - geodesic) <= 1e-7 * geodesic : !std::isfinite(geodesic)));
+          BOOST_TEST((c.valid ? std::abs(c.objective - conformal) <= 1e-7 * conformal + 1e-15 : !std::isfinite(conformal)));
         }
       }
       BOOST_TEST(members == 3);
       const Conformal::Border_candidate& kept =
         report.border_candidates[static_cast<std::size_t>(report.chosen_candidate)];
       BOOST_TEST(kept.objective == best);
-      BOOST_TEST(std::abs(kept.objective - q.angle_distortion) <= 1e-9 * q.angle_distortion);
+      BOOST_TEST(std::abs(kept.objective - q.angle_distortion) <= 1e-9 * q.angle_distortion + 1e-15);
       BOOST_TEST(report.status == SMP::OK);
       BOOST_TEST(!report.repaired);
     }
 }
 
-BOOST_AUTO_TEST_CASE(automatic_border_finds_the_flat_shape)
+MBP_TIERED_TEST_CASE(automatic_border_finds_the_flat_shape)
 {
   // a flat disk whose border vertices are evenly spaced on a circle: the circle member is the
   // exact shape (the cotangent Laplacian reproduces linear functions)
+  if(tier == mbp_test::Tier::core)
   {
     Mesh m = make(mbp_test::polar_disk(8, 32));
     UV_map uv = new_uv(m, "v:uv");
@@ -457,9 +470,10 @@ BOOST_AUTO_TEST_CASE(automatic_border_finds_the_flat_shape)
   // flat star-shaped disks that are not round (a generated ellipse; bump-domain.obj): with
   // exact geodesic distances the measured border, a member, is the exact shape
   std::vector<std::pair<std::string, Mesh> > meshes;
-  meshes.emplace_back("hex ellipse", make(mbp_test::hex_disk(10, 2., 1.)));
-  if(mbp_test::mesh_set() == "shared")
-    meshes.emplace_back("bump-domain.obj", read("bump-domain.obj"));
+  if(tier == mbp_test::Tier::core)
+    meshes.emplace_back("hex ellipse", make(mbp_test::hex_disk(10, 2., 1.)));
+  else
+    meshes.emplace_back("bump-domain.obj", read(tier, "bump-domain.obj"));
   for(auto& named : meshes)
     BOOST_TEST_CONTEXT(named.first)
     {
@@ -476,15 +490,14 @@ BOOST_AUTO_TEST_CASE(automatic_border_finds_the_flat_shape)
       const auto& report = automatic.last_report();
       BOOST_REQUIRE(report.chosen_candidate >= 0);
       const auto& kept = report.border_candidates[static_cast<std::size_t>(report.chosen_candidate)];
-      BOOST_TEST(kept.family == decltype(automatic)::POLICY_BORDER);
-      BOOST_TEST(kept.blend == 0.);
+      BOOST_TEST(kept.blend == ((kept.family == decltype(automatic)::CIRCLE) ? 1. : 0.));
     }
 }
 
-BOOST_AUTO_TEST_CASE(automatic_border_is_deterministic)
+MBP_TIERED_TEST_CASE(automatic_border_is_deterministic)
 {
-  const std::string name = automatic_border_meshes()[1];
-  Mesh m = read(name);
+  const std::string name = automatic_border_meshes(tier)[1];
+  Mesh m = read(tier, name);
   UV_map a = new_uv(m, "v:a"), b = new_uv(m, "v:b"), c = new_uv(m, "v:c");
   Conformal first, second, sequential;
   for(Conformal* p : {&first, &second, &sequential})
@@ -512,7 +525,7 @@ BOOST_AUTO_TEST_CASE(automatic_border_is_deterministic)
 
   // the same choice through Polyhedron_3
   Poly poly;
-  mbp_test::read_mesh(mbp_test::require_mesh(name), poly);
+  mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), poly);
   typedef boost::graph_traits<Poly>::vertex_descriptor Poly_vertex;
   std::map<Poly_vertex, EPICK::Point_2> storage;
   auto puv = boost::make_assoc_property_map(storage);

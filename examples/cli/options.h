@@ -43,11 +43,11 @@ struct Options
   bool json = false;
   bool help = false;
   bool repair = true;       // --no-repair turns it off
-  bool auto_border = false; // --border=auto: the best border of the family (measured is the default)
+  std::string border = "auto";      // auto, conformal, measured or circle
   bool fixed_center = false;        // --center=vertex:N
   std::size_t center_vertex = 0;    // N
   std::string center = "poisson";   // poisson, or geodesic:METHOD (when not fixed_center)
-  std::string distance = "poisson"; // poisson, a geodesic METHOD, or straightest
+  std::string distance = "poisson"; // poisson, a geodesic METHOD, or straightest (default: see parse)
   Solver solver = has_cholmod() ? Solver::cholmod : Solver::ldlt;
 
   std::string center_name() const
@@ -76,7 +76,7 @@ inline std::string usage(const std::string& default_mesh)
   std::string u =
     "usage: measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]\n"
     "                                 [--center=poisson|geodesic[:METHOD]|vertex:N]\n"
-    "                                 [--distance=poisson|METHOD|straightest] [--border=measured|auto]\n"
+    "                                 [--distance=poisson|METHOD|straightest] [--border=auto|conformal|measured|circle]\n"
     "                                 [--solver=cholmod|ldlt] [--output=FILE] [--svg=FILE] [--json]\n"
     "                                 [--no-repair] [--help]\n"
     "\n"
@@ -119,21 +119,24 @@ inline std::string usage(const std::string& default_mesh)
     "                     appearance); it must be in a face and not on the longest border or a\n"
     "                     seam\n"
     "  --distance=poisson distances from the center to the border by the Poisson distance map\n"
-    "                     (default)\n"
+    "                     (default with --border=measured: the paper's method)\n"
     "  --distance=METHOD  geodesic distances from the center, computed with METHOD\n"
     "  --distance=straightest\n"
     "                     straightest geodesics (cutting planes through the center's normal);\n"
     "                     fails, naming the border vertex, when a plane curve misses its vertex\n"
     "                     METHOD: fast-marching, dijkstra (along edges), heat (heat method),\n"
     "                     heat-idt (heat method on the intrinsic Delaunay triangulation), exact\n"
-    "  --border=measured  the border at the measured distances (default)\n"
-    "  --border=auto      the best border of a family, all solved with the one factorization of\n"
-    "                     the interior: the circle (arc length), the measured border of\n"
-    "                     --distance and a second measured border (fast marching geodesics, or\n"
-    "                     the Poisson distance map when --distance=fast-marching), and blends of\n"
-    "                     each toward the circle, t in [0, 1] (grid 0, 1/2, 1 refined by golden\n"
-    "                     section: 13 borders at most). The valid border of lowest angle\n"
-    "                     distortion is kept; the summary names it, --json lists every candidate\n"
+    "  --border=auto      (default) the best border of a family, all solved with the one\n"
+    "                     factorization of the interior: the circle (arc length), the measured\n"
+    "                     border of --center and --distance (default distance: fast-marching,\n"
+    "                     so that one matrix is factorized), the conformal border, and blends\n"
+    "                     toward a convex border of the members whose own layout folds. The\n"
+    "                     valid layout of lowest angle distortion is kept; the summary names\n"
+    "                     it, --json lists every candidate\n"
+    "  --border=conformal the conformal border (Boundary First Flattening's border with\n"
+    "                     boundary scale factors 0): near-conformal, one factorization\n"
+    "  --border=measured  the paper's measured border at the --distance distances\n"
+    "  --border=circle    CGAL's circle with arc-length angles\n"
     "  --solver=NAME      sparse Cholesky factorization: cholmod (CHOLMOD supernodal) or ldlt\n"
     "                     (Eigen's SimplicialLDLT). Default: ";
   u += has_cholmod() ? "cholmod" : "ldlt (this build has no CHOLMOD)";
@@ -267,12 +270,9 @@ inline std::string parse_options(int argc, char** argv, Options& o)
     {
       if(!(error = value_of(arg, "--border", seen_border, value)).empty())
         return error;
-      if(value == "measured")
-        o.auto_border = false;
-      else if(value == "auto")
-        o.auto_border = true;
-      else
-        return "unknown value '" + value + "' of --border (expected measured or auto)";
+      if(value != "auto" && value != "conformal" && value != "measured" && value != "circle")
+        return "unknown value '" + value + "' of --border (expected auto, conformal, measured or circle)";
+      o.border = value;
     }
     else if(arg == "--solver" || starts_with(arg, "--solver="))
     {
@@ -317,6 +317,10 @@ inline std::string parse_options(int argc, char** argv, Options& o)
       return "unknown option '" + arg + "' (see --help)";
   }
 
+  // the automatic border's measured member: fast marching geodesics unless asked otherwise
+  // (no second matrix to factorize); the measured border alone: the paper's Poisson distances
+  if(!seen_distance && o.border == "auto")
+    o.distance = "fast-marching";
   if(positional.size() > 2)
     return "too many arguments: '" + positional[2] + "' (expected at most INPUT and OUTPUT.obj)";
   if(positional.size() > 0)

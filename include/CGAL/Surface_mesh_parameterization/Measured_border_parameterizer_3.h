@@ -1,7 +1,11 @@
-// Copyright (c) 2026 The measured boundary parameterization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
 //
 // This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURED_BORDER_PARAMETERIZER_3_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURED_BORDER_PARAMETERIZER_3_H
@@ -296,6 +300,8 @@ public:
 
   /// the record of the last call.
   const Record& last_record() const { return *m_record; }
+  /// forgets the last call (its record becomes that of a call not made yet).
+  void clear_record() { *m_record = Record(); }
   /// the center vertex of the last call (`null_vertex()` when it failed before locating it).
   vertex_descriptor center() const { return m_record->center; }
   /// the border vertices of the last call, from `source(bhd)` along the loop.

@@ -1,7 +1,11 @@
-// Copyright (c) 2026 The measured boundary parameterization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
 //
 // This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_PATCH_3_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_PARAMETERIZATION_PATCH_3_H
@@ -310,6 +314,17 @@ public:
     b.setZero(static_cast<Eigen::Index>(m_interior.size()), border_values.cols());
     for(const Coupling& c : m_coupling)
       b.row(c.row) += c.weight * border_values.row(c.border_index);
+  }
+
+  /// the border rows of the cotangent Laplacian \f$ L = D - W \f$ applied to a function that
+  /// vanishes on the border: \f$ h = L_{BI} x \f$, i.e.
+  /// \f$ h_k = -\sum_{i \in I} w_{b_k i} x_i \f$, one value per `border()` entry (`x` in
+  /// `interior_vertices()` order). It is the transpose of `interior_rhs_from_border()`.
+  void border_rows_times_interior(const std::vector<double>& x, std::vector<double>& h) const
+  {
+    h.assign(m_border.size(), 0.);
+    for(const Coupling& c : m_coupling)
+      h[static_cast<std::size_t>(c.border_index)] -= c.weight * x[static_cast<std::size_t>(c.row)];
   }
 
   /// assembles and factorizes, unless it already is for this `exponent`, the spring

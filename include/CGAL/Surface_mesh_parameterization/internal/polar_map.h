@@ -1,7 +1,11 @@
-// Copyright (c) 2026 The measured boundary parameterization authors.
-// SPDX-License-Identifier: LGPL-3.0-or-later
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
 //
 // This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
 
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H
@@ -61,6 +65,33 @@ inline bool is_strictly_convex_clockwise(const std::vector<Eigen::Vector2d>& p)
   return true;
 }
 
+// CGAL's placement of a border polygon: scales uniformly and translates `p` so that its
+// bounding box is centered in [0,1]^2 with its longest side spanning [0,1] (CGAL's circle:
+// center (0.5,0.5), radius 0.5). `origin` and `scale` tell where the old origin went and how
+// much lengths were scaled. False when the polygon has no extent or is not finite.
+inline bool fit_into_unit_square(std::vector<Eigen::Vector2d>& p, Eigen::Vector2d& origin, double& scale)
+{
+  Eigen::Vector2d lo(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  for(const Eigen::Vector2d& q : p)
+  {
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  const double extent = (std::max)(hi.x() - lo.x(), hi.y() - lo.y());
+  if(!(extent > 0.) || !std::isfinite(extent))
+    return false;
+  const Eigen::Vector2d mid = 0.5 * (lo + hi);
+  scale = 1. / extent;
+  origin = Eigen::Vector2d(0.5, 0.5) - mid / extent;
+  for(Eigen::Vector2d& q : p)
+  {
+    q = Eigen::Vector2d(0.5, 0.5) + (q - mid) / extent;
+    q = q.cwiseMax(Eigen::Vector2d(0., 0.)).cwiseMin(Eigen::Vector2d(1., 1.));  // rounding only
+  }
+  return true;
+}
+
 // Places border vertex k at radius radii[k] and polar angle -angles[k] (angles strictly
 // increasing in [0, 2 pi), radii positive), then scales uniformly and translates so that the
 // bounding box is centered in [0,1]^2 with its longest side spanning [0,1].
@@ -81,25 +112,10 @@ inline Error_code place_polar_border(const std::vector<double>& angles, const st
   }
   out.angles = angles;
   out.uv.resize(m);
-  Eigen::Vector2d lo(std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
-  Eigen::Vector2d hi = -lo;
   for(std::size_t k = 0; k < m; ++k)
-  {
     out.uv[k] = Eigen::Vector2d(radii[k] * std::cos(-angles[k]), radii[k] * std::sin(-angles[k]));
-    lo = lo.cwiseMin(out.uv[k]);
-    hi = hi.cwiseMax(out.uv[k]);
-  }
-  const double extent = (std::max)(hi.x() - lo.x(), hi.y() - lo.y());
-  if(!(extent > 0.) || !std::isfinite(extent))
+  if(!fit_into_unit_square(out.uv, out.origin, out.scale))
     return ERROR_DEGENERATE_BORDER_MAP;
-  const Eigen::Vector2d mid = 0.5 * (lo + hi);
-  out.scale = 1. / extent;
-  out.origin = Eigen::Vector2d(0.5, 0.5) - mid / extent;
-  for(Eigen::Vector2d& p : out.uv)
-  {
-    p = Eigen::Vector2d(0.5, 0.5) + (p - mid) / extent;
-    p = p.cwiseMax(Eigen::Vector2d(0., 0.)).cwiseMin(Eigen::Vector2d(1., 1.));  // rounding only
-  }
   out.strictly_convex = is_strictly_convex_clockwise(out.uv);
   return OK;
 }

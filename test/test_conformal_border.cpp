@@ -1,0 +1,696 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+// The conformal border (Conformal_border_parameterizer_3, and CONFORMAL_BORDER /
+// AUTOMATIC_BORDER of Measured_conformal_parameterizer_3), against independent computations:
+// planar non-star-shaped disks reproduced exactly, a developable patch unrolled exactly, the
+// turning angles recomputed from a dense cotangent Laplacian assembled here, the closing
+// step against a dense solution of its least-squares problem, the sign of the correction,
+// the blend of a self-overlapping border, and CGAL's DCP with the drop-in border.
+
+#define BOOST_TEST_MODULE conformal_border
+#include <boost/test/unit_test.hpp>
+
+#include "test_support.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Seam_mesh.h>
+
+#include <CGAL/Surface_mesh_parameterization/Barycentric_mapping_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_authalic_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <CGAL/Surface_mesh_parameterization/Conformal_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/measure_quality.h>
+
+#include <Eigen/Dense>
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+typedef CGAL::Simple_cartesian<double>                          K;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel     EPICK;
+typedef CGAL::Surface_mesh<K::Point_3>                          Mesh;
+typedef CGAL::Polyhedron_3<EPICK>                               Poly;
+typedef boost::graph_traits<Mesh>::vertex_descriptor            vertex_descriptor;
+typedef boost::graph_traits<Mesh>::halfedge_descriptor          halfedge_descriptor;
+typedef Mesh::Property_map<vertex_descriptor, K::Point_2>       UV_map;
+typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > LU;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh>           Full;
+typedef SMP::Conformal_border_parameterizer_3<Mesh>             Border;
+
+namespace {
+
+Mesh make(const mbp_test::Soup& soup)
+{
+  Mesh m;
+  mbp_test::soup_to_mesh(soup, m);
+  return m;
+}
+
+UV_map new_uv(Mesh& m, const std::string& name)
+{
+  return m.add_property_map<vertex_descriptor, K::Point_2>(name, K::Point_2(-7, -7)).first;
+}
+
+// The faces of a soup made counterclockwise in the xy-plane (for planar soups).
+void orient_ccw(mbp_test::Soup& s)
+{
+  for(auto& f : s.faces)
+  {
+    const auto &a = s.points[f[0]], &b = s.points[f[1]], &c = s.points[f[2]];
+    if((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) < 0.)
+      std::swap(f[1], f[2]);
+  }
+}
+
+// A grid of `cols` x `rows` quads over (s, w) in [0,1]^2, each split in two, mapped by `at`.
+template <class Map>
+mbp_test::Soup grid(int cols, int rows, const Map& at)
+{
+  mbp_test::Soup s;
+  for(int i = 0; i <= cols; ++i)
+    for(int j = 0; j <= rows; ++j)
+      s.points.push_back(at(double(i) / cols, double(j) / rows));
+  auto id = [rows](int i, int j) { return std::size_t(i * (rows + 1) + j); };
+  for(int i = 0; i < cols; ++i)
+    for(int j = 0; j < rows; ++j)
+    {
+      s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+// A flat spiral strip (one and a half turns): a planar disk that is not star-shaped.
+mbp_test::Soup planar_spiral()
+{
+  mbp_test::Soup s = grid(90, 4, [](double a, double b) {
+    const double theta = 3. * CGAL_PI * a, rho = 1. + 0.35 * theta + 0.3 * (b - 0.5);
+    return std::array<double, 3>{{rho * std::cos(theta), rho * std::sin(theta), 0.}};
+  });
+  orient_ccw(s);
+  return s;
+}
+
+// The flat C-shape rolled onto a prism (a polyhedral cylinder whose edges are the grid's
+// vertical lines): every triangle stays in one flat strip, so the surface is isometric to
+// the C-shape. `planar` receives the C-shape's own coordinates.
+mbp_test::Soup rolled_c_shape(std::vector<std::array<double, 2> >& planar)
+{
+  const int n = 6;
+  mbp_test::Soup s = mbp_test::c_shape(n);
+  orient_ccw(s);
+  const double alpha = 1.5 * CGAL_PI / (3 * n);         // turn per column: 3/4 of a turn in all
+  const double R = (1. / n) / (2. * std::sin(0.5 * alpha));  // chord of one column = 1/n
+  planar.clear();
+  for(auto& p : s.points)
+  {
+    planar.push_back({{p[0], p[1]}});
+    const double theta = std::round(p[0] * n) * alpha;
+    p = {{R * std::sin(theta), p[1], R * (1. - std::cos(theta))}};
+  }
+  return s;
+}
+
+// An annular ramp turning 1.6 times around: flat to first order, its conformal border
+// overlaps itself.
+mbp_test::Soup spiral_ramp()
+{
+  mbp_test::Soup s = grid(120, 5, [](double a, double b) {
+    const double theta = 3.2 * CGAL_PI * a, r = 1. + b;
+    return std::array<double, 3>{{r * std::cos(theta), r * std::sin(theta), 0.08 * theta}};
+  });
+  orient_ccw(s);
+  return s;
+}
+
+// max over vertices of |uv - (a x + b)| / diameter(x) for the best similarity (a, b complex).
+double similarity_error(const Mesh& m, UV_map uv, const std::vector<std::array<double, 2> >& x)
+{
+  std::vector<std::complex<double> > X, U;
+  for(vertex_descriptor v : vertices(m))
+  {
+    X.emplace_back(x[std::size_t(v)][0], x[std::size_t(v)][1]);
+    U.emplace_back(uv[v].x(), uv[v].y());
+  }
+  std::complex<double> cx(0.), cu(0.);
+  for(std::size_t i = 0; i < X.size(); ++i)
+  {
+    cx += X[i];
+    cu += U[i];
+  }
+  cx /= double(X.size());
+  cu /= double(U.size());
+  std::complex<double> num(0.);
+  double den = 0., diameter = 0.;
+  for(std::size_t i = 0; i < X.size(); ++i)
+  {
+    num += std::conj(X[i] - cx) * (U[i] - cu);
+    den += std::norm(X[i] - cx);
+  }
+  const std::complex<double> a = num / den;
+  double error = 0.;
+  for(std::size_t i = 0; i < X.size(); ++i)
+  {
+    error = (std::max)(error, std::abs(a * (X[i] - cx) + cu - U[i]));
+    diameter = (std::max)(diameter, std::abs(U[i] - cu));
+  }
+  return error / (2. * diameter);
+}
+
+std::vector<std::array<double, 2> > xy(const mbp_test::Soup& s)
+{
+  std::vector<std::array<double, 2> > x;
+  for(const auto& p : s.points)
+    x.push_back({{p[0], p[1]}});
+  return x;
+}
+
+double angle_distortion(const Mesh& m, UV_map uv)
+{
+  return SMP::measure_quality(m, faces(m), uv).angle_distortion;
+}
+
+// The full parameterizer with a border choice; its UVs in `uv`.
+SMP::Error_code flatten(Mesh& m, Full::Border_choice choice, UV_map uv, Full* out = nullptr)
+{
+  Full p;
+  p.set_border_choice(choice);
+  const SMP::Error_code status = SMP::parameterize(m, p, mbp_test::longest_border(m), uv);
+  if(out)
+    *out = p;
+  return status;
+}
+
+// The turning angles k - L_BI L_II^-1 Omega computed here from a dense cotangent Laplacian.
+std::vector<double> dense_turning_angles(const Mesh& m, halfedge_descriptor bhd)
+{
+  const std::size_t n = num_vertices(m);
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
+  std::vector<double> sums(n, 0.);
+  for(auto f : faces(m))
+  {
+    std::vector<vertex_descriptor> t;
+    for(auto h : halfedges_around_face(halfedge(f, m), m))
+      t.push_back(target(h, m));
+    for(int k = 0; k < 3; ++k)
+    {
+      const K::Point_3 &p = m.point(t[k]), &a = m.point(t[(k + 1) % 3]), &b = m.point(t[(k + 2) % 3]);
+      const K::Vector_3 u = a - p, v = b - p;
+      const double angle = std::atan2(std::sqrt(CGAL::cross_product(u, v).squared_length()), u * v);
+      sums[std::size_t(t[k])] += angle;
+      const double w = 0.5 / std::tan(angle);  // cotangent weight of the opposite edge
+      const Eigen::Index i = Eigen::Index(t[(k + 1) % 3]), j = Eigen::Index(t[(k + 2) % 3]);
+      L(i, j) -= w;
+      L(j, i) -= w;
+      L(i, i) += w;
+      L(j, j) += w;
+    }
+  }
+  std::vector<vertex_descriptor> border;
+  std::vector<bool> on_border(n, false);
+  for(auto h : halfedges_around_face(bhd, m))
+  {
+    border.push_back(source(h, m));
+    on_border[std::size_t(source(h, m))] = true;
+  }
+  std::vector<Eigen::Index> inner;
+  for(std::size_t i = 0; i < n; ++i)
+    if(!on_border[i])
+      inner.push_back(Eigen::Index(i));
+  Eigen::MatrixXd LII(inner.size(), inner.size());
+  Eigen::VectorXd omega(inner.size());
+  for(std::size_t a = 0; a < inner.size(); ++a)
+  {
+    omega[Eigen::Index(a)] = 2. * CGAL_PI - sums[std::size_t(inner[a])];
+    for(std::size_t b = 0; b < inner.size(); ++b)
+      LII(Eigen::Index(a), Eigen::Index(b)) = L(inner[a], inner[b]);
+  }
+  const Eigen::VectorXd u = LII.ldlt().solve(omega);
+  std::vector<double> turning;
+  for(vertex_descriptor b : border)
+  {
+    double h = 0.;
+    for(std::size_t a = 0; a < inner.size(); ++a)
+      h += L(Eigen::Index(b), inner[a]) * u[Eigen::Index(a)];
+    turning.push_back(CGAL_PI - sums[std::size_t(b)] - h);
+  }
+  return turning;
+}
+
+// A border parameterizer that places given UVs (a test double for CGAL's DCP).
+struct Given_border
+{
+  std::vector<vertex_descriptor> vertices;
+  std::vector<Eigen::Vector2d> uv;
+  template <class UVmap, class Vimap, class Vpmap>
+  SMP::Error_code parameterize(const Mesh&, halfedge_descriptor, UVmap uvmap, Vimap, Vpmap vpmap)
+  {
+    for(std::size_t k = 0; k < vertices.size(); ++k)
+    {
+      put(uvmap, vertices[k], K::Point_2(uv[k].x(), uv[k].y()));
+      put(vpmap, vertices[k], true);
+    }
+    return SMP::OK;
+  }
+  bool is_border_convex() const { return false; }
+};
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(planar_non_star_shaped_disks_are_reproduced_exactly)
+{
+  for(const auto& named : {std::make_pair(std::string("spiral"), planar_spiral()),
+                           std::make_pair(std::string("C-shape"), mbp_test::c_shape(6))})
+  {
+    mbp_test::Soup soup = named.second;
+    orient_ccw(soup);
+    Mesh m = make(soup);
+    UV_map conformal = new_uv(m, "v:conformal"), circle = new_uv(m, "v:circle"), measured = new_uv(m, "v:measured");
+    BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, conformal), SMP::OK);
+    const double e = similarity_error(m, conformal, xy(soup));
+    BOOST_TEST_MESSAGE(named.first << ": conformal border, distance to the input after alignment " << e);
+    BOOST_TEST_CONTEXT(named.first) { BOOST_TEST(e <= 1e-8); }
+    // the drop-in border alone: the border polygon is the input's, and it is not convex
+    Border border;
+    UV_map b = new_uv(m, "v:border");
+    auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
+    auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
+    BOOST_REQUIRE_EQUAL(border.parameterize(m, mbp_test::longest_border(m), b, vim, vpm), SMP::OK);
+    BOOST_TEST(border.last_record().blend == 0.);
+    BOOST_TEST(!border.is_border_convex());
+    // the circle and the measured border cannot reproduce it
+    flatten(m, Full::CIRCULAR_BORDER, circle);
+    flatten(m, Full::MEASURED_BORDER, measured);
+    BOOST_TEST(similarity_error(m, circle, xy(soup)) > 1e-3);
+    BOOST_TEST(similarity_error(m, measured, xy(soup)) > 1e-3);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(a_developable_patch_is_unrolled_exactly)
+{
+  std::vector<std::array<double, 2> > planar;
+  Mesh m = make(rolled_c_shape(planar));
+  double height = 0.;  // the patch is really bent
+  for(vertex_descriptor v : vertices(m))
+    height = (std::max)(height, m.point(v).z());
+  BOOST_TEST(height > 0.5);
+  UV_map uv = new_uv(m, "v:uv"), circle = new_uv(m, "v:circle");
+  BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, uv), SMP::OK);
+  const double e = similarity_error(m, uv, planar);
+  BOOST_TEST_MESSAGE("rolled C-shape: distance to the unrolled shape " << e);
+  BOOST_TEST(e <= 1e-8);
+  BOOST_TEST(angle_distortion(m, uv) <= 1e-12);
+  flatten(m, Full::CIRCULAR_BORDER, circle);
+  BOOST_TEST(similarity_error(m, circle, planar) > 1e-3);
+}
+
+BOOST_AUTO_TEST_CASE(turning_angles_closing_and_lengths_against_dense_computations)
+{
+  Mesh m = make(mbp_test::bumpy_disk(6, 20));
+  const halfedge_descriptor bhd = mbp_test::longest_border(m);
+  Border border;
+  UV_map uv = new_uv(m, "v:uv");
+  auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
+  auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
+  BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, uv, vim, vpm), SMP::OK);
+  const Border::Record& r = border.last_record();
+  const std::size_t mb = r.border_vertices.size();
+  BOOST_REQUIRE_EQUAL(r.turning_angles.size(), mb);
+
+  // the turning angles: a dense cotangent Laplacian and a dense solve, assembled here
+  const std::vector<double> dense = dense_turning_angles(m, bhd);
+  double sum = 0., worst = 0., correction = 0.;
+  for(std::size_t k = 0; k < mb; ++k)
+  {
+    sum += r.turning_angles[k];
+    worst = (std::max)(worst, std::abs(r.turning_angles[k] - dense[k]));
+    correction = (std::max)(correction, std::abs(r.corrections[k]));
+  }
+  BOOST_TEST(std::abs(sum - 2. * CGAL_PI) <= 1e-10);  // discrete Gauss-Bonnet
+  BOOST_TEST(worst <= 1e-10);
+  BOOST_TEST(correction > 1e-3);  // a curved disk: the correction matters
+
+  // closing: the dense least-squares problem min sum (l* - l)^2 / l subject to T l* = 0
+  std::vector<double> phi(mb, 0.);
+  for(std::size_t k = 1; k < mb; ++k)
+    phi[k] = phi[k - 1] - r.turning_angles[k];
+  const Eigen::Index n = Eigen::Index(mb);
+  Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(n + 2, n + 2);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + 2);
+  for(Eigen::Index k = 0; k < n; ++k)
+  {
+    const double l = r.edge_lengths[std::size_t(k)];
+    kkt(k, k) = 1. / l;
+    rhs[k] = 1.;  // (1/l) * l
+    kkt(k, n) = kkt(n, k) = std::cos(phi[std::size_t(k)]);
+    kkt(k, n + 1) = kkt(n + 1, k) = std::sin(phi[std::size_t(k)]);
+  }
+  const Eigen::VectorXd solution = kkt.fullPivLu().solve(rhs);
+  double length_error = 0., total = 0.;
+  Eigen::Vector2d gap(0., 0.);
+  for(std::size_t k = 0; k < mb; ++k)
+  {
+    length_error = (std::max)(length_error, std::abs(r.closed_lengths[k] - solution[Eigen::Index(k)]));
+    total += r.edge_lengths[k];
+    gap += r.closed_lengths[k] * Eigen::Vector2d(std::cos(phi[k]), std::sin(phi[k]));
+  }
+  BOOST_TEST(length_error <= 1e-12 * total);
+  BOOST_TEST(gap.norm() <= 1e-12 * total);
+
+  // the polygon written in the map has those edges, up to one scale and one rotation
+  const double scale = (r.border_uv[1] - r.border_uv[0]).norm() / r.closed_lengths[0];
+  for(std::size_t k = 0; k < mb; ++k)
+  {
+    const Eigen::Vector2d e = r.border_uv[(k + 1) % mb] - r.border_uv[k];
+    BOOST_TEST(std::abs(e.norm() - scale * r.closed_lengths[k]) <= 1e-12);
+    const Eigen::Vector2d p(uv[r.border_vertices[k]].x(), uv[r.border_vertices[k]].y());
+    BOOST_TEST((p - r.border_uv[k]).norm() == 0.);
+  }
+}
+
+BOOST_AUTO_TEST_CASE(the_sign_of_the_correction)
+{
+  // A curved, asymmetric disk: the opposite sign k + h gives turning angles that do not sum
+  // to 2 pi and a layout (CGAL's DCP with that border) with far more angle distortion.
+  Mesh m = make(mbp_test::bumpy_disk(8, 24));
+  const halfedge_descriptor bhd = mbp_test::longest_border(m);
+  UV_map ours = new_uv(m, "v:ours"), wrong = new_uv(m, "v:wrong");
+  Full full;
+  full.set_border_choice(Full::CONFORMAL_BORDER);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, full, bhd, ours), SMP::OK);
+
+  Border border;
+  UV_map b = new_uv(m, "v:b");
+  auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
+  auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
+  BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, b, vim, vpm), SMP::OK);
+  const Border::Record& r = border.last_record();
+  std::vector<double> opposite(r.turning_angles.size());
+  double sum = 0.;
+  for(std::size_t k = 0; k < opposite.size(); ++k)
+  {
+    opposite[k] = r.geodesic_curvatures[k] + r.corrections[k];
+    sum += opposite[k];
+  }
+  BOOST_TEST(std::abs(sum - 2. * CGAL_PI) > 1e-2);
+  Given_border given;
+  given.vertices = r.border_vertices;
+  BOOST_REQUIRE(SMP::internal::polygon_from_turning_angles(opposite, r.edge_lengths, given.uv) == SMP::OK);
+  SMP::Discrete_conformal_map_parameterizer_3<Mesh, Given_border, LU> dcp(given);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, wrong), SMP::OK);
+  const double a = angle_distortion(m, ours), w = angle_distortion(m, wrong);
+  BOOST_TEST_MESSAGE("angle distortion: k - h " << a << ", k + h " << w);
+  BOOST_TEST(10. * a < w);
+}
+
+BOOST_AUTO_TEST_CASE(a_self_overlapping_border_is_blended_until_valid)
+{
+  Mesh m = make(spiral_ramp());
+  const halfedge_descriptor bhd = mbp_test::longest_border(m);
+  Border border;
+  UV_map b = new_uv(m, "v:b");
+  auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
+  auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
+  BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, b, vim, vpm), SMP::OK);
+  const Border::Record& r = border.last_record();
+  // the conformal border itself overlaps: a blend was needed, and the result is simple
+  BOOST_TEST(r.blend > 0.);
+  BOOST_TEST(r.blend < 1.);
+  BOOST_TEST(SMP::internal::is_simple_polygon(r.border_uv));
+  std::vector<Eigen::Vector2d> at_zero;
+  BOOST_REQUIRE(SMP::internal::polygon_from_turning_angles(r.turning_angles, r.edge_lengths, at_zero) == SMP::OK);
+  BOOST_TEST(!SMP::internal::is_simple_polygon(at_zero));
+
+  // the complete parameterizer: the smallest blend whose layout is one-to-one
+  UV_map uv = new_uv(m, "v:uv");
+  Full conformal;
+  BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, uv, &conformal), SMP::OK);
+  BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+  const Full::Report& report = conformal.last_report();
+  BOOST_TEST(report.kept_border == Full::CONFORMAL);
+  BOOST_TEST(report.blend >= r.blend);
+  BOOST_TEST(report.blend < 1.);
+  // the automatic border: valid, and never worse than that
+  UV_map automatic_uv = new_uv(m, "v:automatic");
+  Full automatic;
+  BOOST_REQUIRE_EQUAL(flatten(m, Full::AUTOMATIC_BORDER, automatic_uv, &automatic), SMP::OK);
+  BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), automatic_uv));
+  BOOST_TEST(angle_distortion(m, automatic_uv) <= angle_distortion(m, uv) * (1. + 1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(drop_in_border_in_cgal_dcp_equals_the_complete_parameterizer)
+{
+  for(const auto& named : {std::make_pair(std::string("bumpy disk"), mbp_test::bumpy_disk()),
+                           std::make_pair(std::string("rolled C"), [] {
+                             std::vector<std::array<double, 2> > p;
+                             return rolled_c_shape(p);
+                           }())})
+  {
+    Mesh m = make(named.second);
+    const halfedge_descriptor bhd = mbp_test::longest_border(m);
+    UV_map full_uv = new_uv(m, "v:full"), dcp_uv = new_uv(m, "v:dcp");
+    BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, full_uv), SMP::OK);
+    SMP::Discrete_conformal_map_parameterizer_3<Mesh, Border, LU> dcp;
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, dcp_uv), SMP::OK);
+    double diff = 0.;
+    for(vertex_descriptor v : vertices(m))
+      diff = (std::max)(diff, std::sqrt(CGAL::squared_distance(full_uv[v], dcp_uv[v])));
+    BOOST_TEST_MESSAGE(named.first << ": drop-in in CGAL's DCP against the complete parameterizer " << diff);
+    BOOST_TEST_CONTEXT(named.first) { BOOST_TEST(diff <= 1e-9); }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(drop_in_border_in_every_fixed_border_parameterizer_and_mesh_type)
+{
+  // a curved disk whose conformal border is convex: every fixed border map is then valid
+  const mbp_test::Soup soup = mbp_test::polar_disk(8, 24, 1., 1., [](double x, double y) { return 0.3 * (x * x + y * y); });
+  Mesh m = make(soup);
+  const halfedge_descriptor bhd = mbp_test::longest_border(m);
+  UV_map uv = new_uv(m, "v:uv");
+  Border border;  // copies share its record
+  SMP::Discrete_conformal_map_parameterizer_3<Mesh, Border> dcp(border);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, uv), SMP::OK);
+  BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+  BOOST_TEST(border.is_border_convex());
+  for(std::size_t k = 0; k < border.border_vertices().size(); ++k)
+  {
+    const K::Point_2 p = uv[border.border_vertices()[k]];
+    BOOST_TEST(std::abs(p.x() - border.border_polygon()[k].x()) == 0.);
+    BOOST_TEST(std::abs(p.y() - border.border_polygon()[k].y()) == 0.);
+  }
+  SMP::Mean_value_coordinates_parameterizer_3<Mesh, Border> mvc(border);
+  BOOST_TEST(SMP::parameterize(m, mvc, bhd, uv) == SMP::OK);
+  BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+  SMP::Barycentric_mapping_parameterizer_3<Mesh, Border> bary;
+  BOOST_TEST(SMP::parameterize(m, bary, bhd, uv) == SMP::OK);
+  BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+  SMP::Discrete_authalic_parameterizer_3<Mesh, Border> authalic;
+  BOOST_TEST(SMP::parameterize(m, authalic, bhd, uv) == SMP::OK);
+  BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+
+  // Polyhedron_3: the same border
+  Poly poly;
+  mbp_test::soup_to_mesh(soup, poly);
+  typedef boost::graph_traits<Poly>::vertex_descriptor Pv;
+  std::map<Pv, EPICK::Point_2> uv_storage;
+  auto poly_uv = boost::make_assoc_property_map(uv_storage);
+  SMP::Conformal_border_parameterizer_3<Poly> poly_border;
+  SMP::Discrete_conformal_map_parameterizer_3<Poly, SMP::Conformal_border_parameterizer_3<Poly> > poly_dcp(poly_border);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(poly, poly_dcp, mbp_test::longest_border(poly), poly_uv), SMP::OK);
+  BOOST_TEST(poly_border.border_polygon() == border.border_polygon());
+
+  // Seam_mesh: a tube cut open along one of its lines is a disk
+  mbp_test::Soup tube = grid(24, 6, [](double a, double b) {
+    const double t = 2. * CGAL_PI * a;
+    return std::array<double, 3>{{std::cos(t), std::sin(t), 1.5 * b}};
+  });
+  // glue the last column onto the first
+  const std::size_t rows = 7;
+  for(auto& f : tube.faces)
+    for(std::size_t& v : f)
+      if(v >= 24 * rows)
+        v -= 24 * rows;
+  tube.points.resize(24 * rows);
+  Mesh base = make(tube);
+  typedef Mesh::Property_map<boost::graph_traits<Mesh>::edge_descriptor, bool> Seam_edges;
+  typedef Mesh::Property_map<vertex_descriptor, bool> Seam_vertices;
+  typedef CGAL::Seam_mesh<Mesh, Seam_edges, Seam_vertices> Seam;
+  Seam_edges se = base.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>("e:seam", false).first;
+  Seam_vertices sv = base.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
+  Seam seam(base, se, sv);
+  for(std::size_t j = 0; j + 1 < rows; ++j)
+  {
+    const auto e = edge(vertex_descriptor(std::uint32_t(j)), vertex_descriptor(std::uint32_t(j + 1)), base);
+    BOOST_REQUIRE(e.second);
+    seam.add_seam(source(e.first, base), target(e.first, base));
+  }
+  const auto seam_bhd = CGAL::Polygon_mesh_processing::longest_border(seam).first;
+  typedef boost::graph_traits<Seam>::vertex_descriptor Sv;
+  std::map<Sv, K::Point_2> seam_storage;
+  auto seam_uv = boost::make_assoc_property_map(seam_storage);
+  SMP::Conformal_border_parameterizer_3<Seam> seam_border;
+  SMP::Discrete_conformal_map_parameterizer_3<Seam, SMP::Conformal_border_parameterizer_3<Seam>, LU> seam_dcp(seam_border);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(seam, seam_dcp, seam_bhd, seam_uv), SMP::OK);
+  // the tube is developable: the cut-open tube unrolls to a rectangle (four corners turn by
+  // pi/2, every other border vertex is straight)
+  const auto& turning = seam_border.last_record().turning_angles;
+  int corners = 0;
+  for(double k : turning)
+  {
+    if(std::abs(k - 0.5 * CGAL_PI) <= 1e-9)
+      ++corners;
+    else
+      BOOST_TEST(std::abs(k) <= 1e-9);
+  }
+  BOOST_TEST(corners == 4);
+  SMP::Measured_conformal_parameterizer_3<Seam> seam_full;
+  seam_full.set_border_choice(SMP::Measured_conformal_parameterizer_3<Seam>::CONFORMAL_BORDER);
+  std::map<Sv, K::Point_2> full_storage;
+  auto full_uv = boost::make_assoc_property_map(full_storage);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(seam, seam_full, seam_bhd, full_uv), SMP::OK);
+  BOOST_TEST(seam_full.last_report().statistics.factorizations == 1);
+}
+
+BOOST_AUTO_TEST_CASE(holes_are_filled_as_for_the_measured_border)
+{
+  Mesh m = make(mbp_test::disk_with_two_holes());
+  UV_map uv = new_uv(m, "v:uv");
+  Full full;
+  BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, uv, &full), SMP::OK);
+  BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+  Border border;
+  UV_map b = new_uv(m, "v:b");
+  auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
+  auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
+  BOOST_REQUIRE_EQUAL(border.parameterize(m, mbp_test::longest_border(m), b, vim, vpm), SMP::OK);
+  double sum = 0.;
+  for(double k : border.last_record().turning_angles)
+    sum += k;
+  BOOST_TEST(std::abs(sum - 2. * CGAL_PI) <= 1e-10);
+  // the conformal border beats the circle on this curved disk
+  UV_map circle = new_uv(m, "v:circle");
+  BOOST_REQUIRE_EQUAL(flatten(m, Full::CIRCULAR_BORDER, circle), SMP::OK);
+  BOOST_TEST(angle_distortion(m, uv) < 0.5 * angle_distortion(m, circle));
+}
+
+BOOST_AUTO_TEST_CASE(one_factorization_unless_poisson_distances_are_asked_for)
+{
+  Mesh m = make(mbp_test::bumpy_disk());
+  UV_map uv = new_uv(m, "v:uv");
+  for(Full::Border_choice choice : {Full::CONFORMAL_BORDER, Full::CIRCULAR_BORDER})
+  {
+    Full p;
+    BOOST_REQUIRE_EQUAL(flatten(m, choice, uv, &p), SMP::OK);
+    BOOST_TEST(p.last_report().statistics.factorizations == 1);
+    BOOST_TEST(p.center() == boost::graph_traits<Mesh>::null_vertex());
+  }
+  // conformal: the angle defects, then u and v
+  Full conformal;
+  flatten(m, Full::CONFORMAL_BORDER, uv, &conformal);
+  BOOST_TEST(conformal.last_report().statistics.back_substitutions == 3);
+  // automatic with geodesic distances: still one factorization
+  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
+    SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics> > geodesic;
+  geodesic.set_border_choice(decltype(geodesic)::AUTOMATIC_BORDER);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, geodesic, mbp_test::longest_border(m), uv), SMP::OK);
+  BOOST_TEST(geodesic.last_report().statistics.factorizations == 1);
+  // automatic with the paper's Poisson distances: the spring Laplacian too
+  Full poisson;
+  BOOST_REQUIRE_EQUAL(flatten(m, Full::AUTOMATIC_BORDER, uv, &poisson), SMP::OK);
+  BOOST_TEST(poisson.last_report().statistics.factorizations == 2);
+}
+
+BOOST_AUTO_TEST_CASE(automatic_border_keeps_the_best_valid_candidate)
+{
+  Mesh m = make(mbp_test::bumpy_disk());
+  UV_map uv = new_uv(m, "v:uv");
+  Full p;
+  BOOST_REQUIRE_EQUAL(flatten(m, Full::AUTOMATIC_BORDER, uv, &p), SMP::OK);
+  const Full::Report& r = p.last_report();
+  BOOST_REQUIRE(r.chosen_candidate >= 0);
+  bool members[3] = {false, false, false};
+  for(const Full::Border_candidate& c : r.border_candidates)
+  {
+    if(c.valid)
+      BOOST_TEST(r.border_candidates[std::size_t(r.chosen_candidate)].objective <= c.objective);
+    members[c.family] = true;
+  }
+  BOOST_TEST(members[Full::CIRCLE]);
+  BOOST_TEST(members[Full::MEASURED]);
+  BOOST_TEST(members[Full::CONFORMAL]);
+  // the kept layout is the one written, and its figure is the paper's angle distortion
+  BOOST_TEST(std::abs(angle_distortion(m, uv) - r.border_candidates[std::size_t(r.chosen_candidate)].objective) <=
+             1e-9 * angle_distortion(m, uv));
+  BOOST_TEST(r.kept_border == Full::CONFORMAL);
+}
+
+// ------------------------------------------------------------------ real disks (extended tier)
+
+namespace {
+
+std::vector<std::string> real_disks()
+{
+  return {"alligator.obj", "bff_face.obj", "bimba_hole.off", "bimba_i.obj", "blade-nice-flip-cyl2.off",
+          "bump-domain.obj", "cylinder_locally_refined.off", "dog.obj", "horse.obj", "igl_face.obj",
+          "inspired_mesh.obj", "irr4-cyl2.off", "lilium.obj", "lion-head.off", "mask.off",
+          "matthew_nefertiti.off", "maxFace.obj", "mushroom.off", "patch-01.off", "snail.obj",
+          "spothead.obj", "venus.off", "woody-hi.off"};
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(real_disks_automatic_border, MBP_EXTENDED_TIER)
+{
+  std::vector<double> ratios;
+  for(const std::string& name : real_disks())
+  {
+    Mesh m;
+    mbp_test::read_mesh(mbp_test::shared_mesh(name), m);
+    UV_map uv = new_uv(m, "v:uv"), circle = new_uv(m, "v:circle");
+    Full p;
+    BOOST_TEST_CONTEXT(name)
+    {
+      BOOST_REQUIRE_EQUAL(flatten(m, Full::AUTOMATIC_BORDER, uv, &p), SMP::OK);
+      const Full::Report& r = p.last_report();
+      const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
+      BOOST_TEST(q.flipped_faces == 0u);
+      BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+      for(const Full::Border_candidate& c : r.border_candidates)
+        if(c.valid)
+          BOOST_TEST(q.angle_distortion <= c.objective * (1. + 1e-9) + 1e-15);
+      double circle_distortion = std::numeric_limits<double>::quiet_NaN();
+      if(flatten(m, Full::CIRCULAR_BORDER, circle) == SMP::OK)
+        circle_distortion = angle_distortion(m, circle);
+      ratios.push_back(q.angle_distortion / circle_distortion);
+      BOOST_TEST_MESSAGE(name << ": automatic " << q.angle_distortion << " (kept " << int(r.kept_border)
+                              << ", blend " << r.blend << "), circle " << circle_distortion);
+    }
+  }
+  std::sort(ratios.begin(), ratios.end());
+  const double median = ratios[ratios.size() / 2];
+  BOOST_TEST_MESSAGE("median automatic / circle: " << median);
+  BOOST_TEST(median <= 0.02);
+}
