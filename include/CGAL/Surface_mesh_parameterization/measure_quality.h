@@ -11,11 +11,12 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_MEASURE_QUALITY_H
 
 /// \file measure_quality.h
-/// Distortion figures of a parameterization, with the definitions of METHOD.md section 5.
+/// Distortion figures of a parameterization, and the global one-to-one test of a UV map.
 
+#include <CGAL/Bbox_2.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh_parameterization/internal/kernel_traits.h>
-#include <CGAL/Surface_mesh_parameterization/internal/validity.h>
+#include <CGAL/intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -305,20 +306,58 @@ Parameterization_quality measure_quality_per_face(const TriangleMesh& tm,
 
 namespace internal {
 
-// Reads a UV map as the mesh kernel's Point_2 (what CGAL's validity test expects).
-template <class TriangleMesh, class VertexUVMap>
-struct Kernel_uv_map
+// The UV triangles of the faces of a range, with exact predicates, for the overlap test.
+struct Uv_triangles
 {
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor key_type;
-  typedef typename Surface_mesh_parameterization::internal::Kernel_traits<TriangleMesh>::Kernel::Point_2 value_type;
-  typedef value_type reference;
-  typedef boost::readable_property_map_tag category;
-  VertexUVMap uvmap;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel EK;
+  typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t,
+                                                    CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS> Box;
+  std::vector<std::array<std::size_t, 3> > vertices;  // vertex ids (index into the range)
+  std::vector<std::array<EK::Point_2, 3> > corners;
 
-  friend value_type get(const Kernel_uv_map& m, key_type v)
+  // whether the interiors of the UV triangles i and j overlap (or touch beyond the vertices
+  // and edge they share in the mesh); both are counterclockwise
+  bool overlap(std::size_t i, std::size_t j) const
   {
-    const auto& q = get(m.uvmap, v);
-    return value_type(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+    const std::array<std::size_t, 3>& a = vertices[i];
+    const std::array<std::size_t, 3>& b = vertices[j];
+    int shared = 0, ka = 0, kb = 0;
+    for(int k = 0; k < 3; ++k)
+      for(int l = 0; l < 3; ++l)
+        if(a[std::size_t(k)] == b[std::size_t(l)])
+        {
+          ++shared;
+          ka = k;
+          kb = l;
+        }
+    const std::array<EK::Point_2, 3>& p = corners[i];
+    const std::array<EK::Point_2, 3>& q = corners[j];
+    if(shared >= 2)
+    {
+      // a shared edge: the two third vertices must lie on opposite sides of it
+      int ia = 0, ib = 0;
+      for(int k = 0; k < 3; ++k)
+      {
+        if(std::find(b.begin(), b.end(), a[std::size_t(k)]) == b.end())
+          ia = k;
+        if(std::find(a.begin(), a.end(), b[std::size_t(k)]) == a.end())
+          ib = k;
+      }
+      const EK::Point_2& e0 = p[std::size_t((ia + 1) % 3)];
+      const EK::Point_2& e1 = p[std::size_t((ia + 2) % 3)];
+      return shared > 2 || CGAL::orientation(e0, e1, p[std::size_t(ia)]) ==
+                             CGAL::orientation(e0, e1, q[std::size_t(ib)]);
+    }
+    if(shared == 1)
+    {
+      // a shared vertex: the interiors overlap near it iff the edge opposite to it in one
+      // triangle meets the other triangle
+      const EK::Segment_2 sa(p[std::size_t((ka + 1) % 3)], p[std::size_t((ka + 2) % 3)]);
+      const EK::Segment_2 sb(q[std::size_t((kb + 1) % 3)], q[std::size_t((kb + 2) % 3)]);
+      return CGAL::do_intersect(EK::Triangle_2(p[0], p[1], p[2]), sb) ||
+             CGAL::do_intersect(EK::Triangle_2(q[0], q[1], q[2]), sa);
+    }
+    return CGAL::do_intersect(EK::Triangle_2(p[0], p[1], p[2]), EK::Triangle_2(q[0], q[1], q[2]));
   }
 };
 
@@ -327,28 +366,65 @@ struct Kernel_uv_map
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
 ///
 /// the global overlap test: whether the map given by `uvmap` on the faces of `face_range` is
-/// one-to-one, i.e. no UV triangle is flipped and no two UV triangles overlap (which a map
-/// without flipped triangles can still do when it winds over itself). Uses CGAL's test
-/// (bounding box intersections, then exact predicates), \f$ O(F \log F) \f$ typically.
+/// one-to-one, i.e. every UV triangle is counterclockwise (none flipped or degenerate) and no
+/// two UV triangles overlap (which a map without flipped triangles can still do when it winds
+/// over itself). Pairs of triangles whose bounding boxes intersect (CGAL's
+/// `box_self_intersection_d()`) are tested with exact predicates, \f$ O(F \log F) \f$
+/// typically. The same test as the `is_one_to_one_mapping()` member functions of CGAL's
+/// parameterizers, for any face range and any 2D point type of `uvmap`.
 template <class TriangleMesh, class FaceRange, class VertexUVMap>
 bool is_one_to_one_uv_map(const TriangleMesh& tm, const FaceRange& face_range, VertexUVMap uvmap)
 {
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor   vertex_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor     face_descriptor;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel              EK;
+  typedef internal::Uv_triangles::EK                                       EK;
+  typedef internal::Uv_triangles::Box                                      Box;
+
+  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<std::size_t> >::const_type
+    Vertex_ids;
+  const Vertex_ids ids = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  const std::size_t unset = (std::numeric_limits<std::size_t>::max)();
+  for(face_descriptor f : face_range)
+    for(vertex_descriptor v : vertices_around_face(halfedge(f, tm), tm))
+      put(ids, v, unset);
+
+  internal::Uv_triangles triangles;
+  std::vector<Box> boxes;
+  std::size_t next_id = 0;
   for(face_descriptor f : face_range)
   {
-    std::vector<EK::Point_2> q;
+    std::array<std::size_t, 3> vs;
+    std::array<EK::Point_2, 3> q;
+    std::size_t k = 0;
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
     {
-      const auto& p = get(uvmap, target(h, tm));
-      q.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
+      if(k == 3)
+        return false;  // not a triangle
+      const vertex_descriptor v = target(h, tm);
+      if(get(ids, v) == unset)
+        put(ids, v, next_id++);
+      vs[k] = get(ids, v);
+      const auto& p = get(uvmap, v);
+      q[k++] = EK::Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y()));
     }
-    if(q.size() != 3 || CGAL::orientation(q[0], q[1], q[2]) != CGAL::LEFT_TURN)
+    if(k != 3 || CGAL::orientation(q[0], q[1], q[2]) != CGAL::LEFT_TURN)
       return false;
+    boxes.emplace_back(q[0].bbox() + q[1].bbox() + q[2].bbox(), triangles.corners.size());
+    triangles.vertices.push_back(vs);
+    triangles.corners.push_back(q);
   }
-  const internal::Kernel_uv_map<TriangleMesh, VertexUVMap> converted{uvmap};
-  return Surface_mesh_parameterization::internal::is_one_to_one_mapping(tm, face_range, converted);
+  // pointers: the boxes' ids are their addresses, which the algorithm's copies keep
+  std::vector<const Box*> box_pointers;
+  box_pointers.reserve(boxes.size());
+  for(const Box& b : boxes)
+    box_pointers.push_back(&b);
+  bool overlap = false;
+  CGAL::box_self_intersection_d(box_pointers.begin(), box_pointers.end(), [&](const Box* a, const Box* b) {
+    if(!overlap && triangles.overlap(a->info(), b->info()))
+      overlap = true;
+  });
+  return !overlap;
 }
 
 } // namespace Surface_mesh_parameterization
