@@ -238,15 +238,16 @@ SMP::Parameterization_quality measured(Mesh& m, SMP::Error_code expected = SMP::
 
 } // namespace
 
-BOOST_AUTO_TEST_CASE(exact_measured_border_reproduces_flat_star_shaped_meshes)
+MBP_TIERED_TEST_CASE(exact_measured_border_reproduces_flat_star_shaped_meshes)
 {
   // paper Table 1, Ellipse, MBPGP = 0: the polar map of exact distances is the flat shape
   std::vector<std::pair<std::string, Mesh> > meshes;
-  meshes.emplace_back("hex ellipse", make(mbp_test::hex_disk(12, 2., 1.)));
-  if(mbp_test::mesh_set() == "shared")
+  if(tier == mbp_test::Tier::core)
+    meshes.emplace_back("hex ellipse", make(mbp_test::hex_disk(12, 2., 1.)));
+  else
   {
     Mesh bump;
-    mbp_test::read_mesh(mbp_test::require_mesh("bump-domain.obj"), bump);
+    mbp_test::read_mesh(mbp_test::shared_mesh("bump-domain.obj"), bump);
     meshes.emplace_back("bump-domain.obj", std::move(bump));
   }
   for(auto& named : meshes)
@@ -271,19 +272,17 @@ BOOST_AUTO_TEST_CASE(exact_measured_border_reproduces_flat_star_shaped_meshes)
   }
 }
 
-BOOST_AUTO_TEST_CASE(flat_domain_not_star_shaped_from_the_center_is_not_reproduced)
+MBP_TIERED_TEST_CASE(flat_domain_not_star_shaped_is_not_reproduced)
 {
-  // A polar border is star-shaped: the alligator (flat, not star-shaped from its center)
-  // cannot be reproduced. Report what the exact geodesic border gives.
-  if(mbp_test::mesh_set() != "shared")
-  {
-    BOOST_TEST_MESSAGE("alligator.obj is only in ../shared/data/meshes: using the L-shape");
-  }
+  // A polar border is star-shaped: a flat domain that is star-shaped from none of its points
+  // cannot be reproduced, wherever the center is. The C-shape (core): from a point of the left
+  // bar the tips of the two arms cannot both be seen, and no point of an arm sees the other
+  // arm's tip. The alligator (extended tier). Report what the exact geodesic border gives.
   Mesh m;
-  if(mbp_test::mesh_set() == "shared")
-    mbp_test::read_mesh(mbp_test::require_mesh("alligator.obj"), m);
+  if(tier == mbp_test::Tier::core)
+    m = make(mbp_test::c_shape());
   else
-    m = make(mbp_test::l_shape());
+    mbp_test::read_mesh(mbp_test::shared_mesh("alligator.obj"), m);
   auto uv = m.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
   SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
                                           SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics> > p;
@@ -343,7 +342,7 @@ template <class M> struct Distances
 template <class M, class Center, class Distance>
 void run_combination(M& mesh, int& runs, int& straightest_failures)
 {
-  typedef typename SMP::internal::Kernel_traits<M>::Kernel::Point_2 Point_2;
+  typedef typename mbp_test::Kernel_of<M>::Point_2 Point_2;
   auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
   SMP::Measured_conformal_parameterizer_3<M, Center, Distance> p;
   const SMP::Error_code status = SMP::parameterize(mesh, p, mbp_test::longest_border(mesh), uv);

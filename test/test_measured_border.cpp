@@ -85,7 +85,7 @@ struct Maps
 {
   typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
   // CGAL's fixed border parameterizers read the UVs as the mesh kernel's Point_2
-  typedef typename SMP::internal::Kernel_traits<Mesh>::Kernel::Point_2 Point_2;
+  typedef typename mbp_test::Kernel_of<Mesh>::Point_2 Point_2;
   typedef typename boost::property_map<Mesh, CGAL::dynamic_vertex_property_t<Point_2> >::const_type UV;
   typedef typename boost::property_map<Mesh, CGAL::dynamic_vertex_property_t<bool> >::const_type Flag;
   UV uv;

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// Real meshes (../shared/data/meshes, or CGAL's data meshes on a clone without it): DCP with
-// the measured border against DCP with CGAL's circular arc-length border, the Poisson
+// Real meshes, CGAL's data meshes (core tier) and the project's meshes (extended tier): DCP
+// with the measured border against DCP with CGAL's circular arc-length border, the Poisson
 // distance map's positivity (paper Theorem A1), and Polyhedron_3 against Surface_mesh.
 
 #define BOOST_TEST_MODULE real_meshes
@@ -58,17 +58,16 @@ struct Mesh_lists
   std::vector<std::string> known_folds;
 };
 
-Mesh_lists mesh_lists()
+Mesh_lists mesh_lists(mbp_test::Tier tier)
 {
   Mesh_lists l;
-  if(mbp_test::mesh_set() == "shared")
+  if(tier == mbp_test::Tier::extended)  // the project's meshes, without the copies of CGAL's
   {
     l.open_patches = {"matthew_nefertiti.off", "bff_face.obj", "mask.off", "bimba_i.obj", "maxFace.obj",
                       "lilium.obj", "snail.obj", "inspired_mesh.obj", "irr4-cyl2.off"};
-    l.nearly_closed = {"venus.off", "lion-head.off", "spothead.obj", "igl_face.obj"};
+    l.nearly_closed = {"venus.off", "spothead.obj", "igl_face.obj"};
     l.other_disks = {"alligator.obj", "bimba_hole.off", "blade-nice-flip-cyl2.off", "bump-domain.obj",
-                     "cylinder_locally_refined.off", "dog.obj", "horse.obj", "mushroom.off", "patch-01.off",
-                     "woody-hi.off"};
+                     "dog.obj", "horse.obj", "woody-hi.off"};
     l.known_folds = {"alligator.obj", "dog.obj", "horse.obj"};
   }
   else  // CGAL's data meshes (Debian's libcgal-demo)
@@ -115,10 +114,10 @@ struct Comparison
   double ratio() const { return measured.q.angle_distortion / circle.q.angle_distortion; }
 };
 
-Comparison compare_borders(const std::string& name)
+Comparison compare_borders(mbp_test::Tier tier, const std::string& name)
 {
   Mesh mesh;
-  mbp_test::read_mesh(mbp_test::require_mesh(name), mesh);
+  mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), mesh);
   Comparison c;
   c.circle = dcp(mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh>());
   SMP::Measured_border_parameterizer_3<Mesh> measured;
@@ -136,19 +135,20 @@ Comparison compare_borders(const std::string& name)
 
 } // namespace
 
-BOOST_AUTO_TEST_CASE(data_is_present)
+BOOST_AUTO_TEST_CASE(core_meshes_are_present)
 {
-  BOOST_TEST_MESSAGE("real meshes: " << mbp_test::mesh_set() << " (" << mbp_test::mesh_dir() << ")");
-  BOOST_REQUIRE(mbp_test::mesh_set() == "shared" || mbp_test::mesh_set() == "cgal");
+  BOOST_TEST_MESSAGE("CGAL's data meshes: " << mbp_test::cgal_mesh_dir());
+  for(const std::string& name : mesh_lists(mbp_test::Tier::core).open_patches)
+    BOOST_TEST(mbp_test::file_exists(mbp_test::core_mesh(name)));
 }
 
-BOOST_AUTO_TEST_CASE(measured_border_lowers_angle_distortion_on_open_patches)
+MBP_TIERED_TEST_CASE(measured_border_lowers_angle_distortion_on_open_patches)
 {
-  for(const std::string& name : mesh_lists().open_patches)
+  for(const std::string& name : mesh_lists(tier).open_patches)
   {
     BOOST_TEST_CONTEXT(name)
     {
-      const Comparison c = compare_borders(name);
+      const Comparison c = compare_borders(tier, name);
       BOOST_TEST(c.measured.q.flipped_faces <= c.circle.q.flipped_faces);
       // "clearly lower": at least 20% below the circle
       BOOST_TEST(c.ratio() <= 0.8);
@@ -156,44 +156,44 @@ BOOST_AUTO_TEST_CASE(measured_border_lowers_angle_distortion_on_open_patches)
   }
 }
 
-BOOST_AUTO_TEST_CASE(nearly_closed_shapes_are_measured_and_reported)
+MBP_TIERED_TEST_CASE(nearly_closed_shapes_are_measured_and_reported)
 {
   // On nearly closed shapes with a short border the circle is as good or slightly better:
   // the ratios are reported; the assertion is only that the measured border stays valid and
   // within a factor 1.5 of the circle.
-  for(const std::string& name : mesh_lists().nearly_closed)
+  for(const std::string& name : mesh_lists(tier).nearly_closed)
   {
     BOOST_TEST_CONTEXT(name)
     {
-      const Comparison c = compare_borders(name);
+      const Comparison c = compare_borders(tier, name);
       BOOST_TEST(c.measured.q.flipped_faces <= c.circle.q.flipped_faces);
       BOOST_TEST(c.ratio() < 1.5);
     }
   }
 }
 
-BOOST_AUTO_TEST_CASE(every_other_disk_mesh_is_parameterized)
+MBP_TIERED_TEST_CASE(every_other_disk_mesh_is_parameterized)
 {
-  const Mesh_lists lists = mesh_lists();
+  const Mesh_lists lists = mesh_lists(tier);
   for(const std::string& name : lists.other_disks)
   {
     BOOST_TEST_CONTEXT(name)
     {
-      const Comparison c = compare_borders(name);
+      const Comparison c = compare_borders(tier, name);
       if(!contains(lists.known_folds, name))
         BOOST_TEST(c.measured.q.flipped_faces <= c.circle.q.flipped_faces);
     }
   }
 }
 
-BOOST_AUTO_TEST_CASE(border_polygon_is_star_shaped_and_convexity_is_honest)
+MBP_TIERED_TEST_CASE(border_polygon_is_star_shaped_and_convexity_is_honest)
 {
   int convex = 0, non_convex = 0;
-  const Mesh_lists lists = mesh_lists();
+  const Mesh_lists lists = mesh_lists(tier);
   for(const std::string& name : lists.open_patches)
   {
     Mesh mesh;
-    mbp_test::read_mesh(mbp_test::require_mesh(name), mesh);
+    mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), mesh);
     auto uv = mesh.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
     auto done = mesh.add_property_map<vertex_descriptor, bool>("v:done", false).first;
     auto vimap = mesh.add_property_map<vertex_descriptor, int>("v:i", 0).first;
@@ -221,14 +221,14 @@ BOOST_AUTO_TEST_CASE(border_polygon_is_star_shaped_and_convexity_is_honest)
   BOOST_TEST(non_convex > 0);
 }
 
-BOOST_AUTO_TEST_CASE(poisson_distance_map_is_positive_away_from_its_sources)
+MBP_TIERED_TEST_CASE(poisson_distance_map_is_positive_away_from_its_sources)
 {
   // Paper Theorem A1: with positive spring weights the map is 0 at the sources and > 0 elsewhere.
-  const Mesh_lists lists = mesh_lists();
+  const Mesh_lists lists = mesh_lists(tier);
   for(const std::string& name : {lists.open_patches[0], lists.open_patches[1], lists.nearly_closed[0]})
   {
     Mesh mesh;
-    mbp_test::read_mesh(mbp_test::require_mesh(name), mesh);
+    mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), mesh);
     const std::vector<vertex_descriptor> sources = {vertex_descriptor(0),
                                                     vertex_descriptor(Mesh::size_type(num_vertices(mesh) / 2))};
     for(double r : {0., 1., 2.})
@@ -248,9 +248,9 @@ BOOST_AUTO_TEST_CASE(poisson_distance_map_is_positive_away_from_its_sources)
   }
 }
 
-BOOST_AUTO_TEST_CASE(polyhedron_and_surface_mesh_agree_on_a_real_mesh)
+MBP_TIERED_TEST_CASE(polyhedron_and_surface_mesh_agree_on_a_real_mesh)
 {
-  const std::string path = mbp_test::require_mesh(mesh_lists().open_patches[0]);
+  const std::string path = mbp_test::tier_mesh(tier, mesh_lists(tier).open_patches[0]);
   Mesh sm;
   Poly poly;
   mbp_test::read_mesh(path, sm);

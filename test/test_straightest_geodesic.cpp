@@ -64,12 +64,12 @@ Arrays from_soup(const mbp_test::Soup& s)
   return a;
 }
 
-Arrays read_arrays(const std::string& name)
+Arrays read_arrays(mbp_test::Tier tier, const std::string& name)
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef CGAL::Surface_mesh<K::Point_3> Mesh;
   Mesh mesh;
-  mbp_test::read_mesh(mbp_test::require_mesh(name), mesh);
+  mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), mesh);
   Arrays a;
   std::map<Mesh::Vertex_index, int> index;
   for(Mesh::Vertex_index v : vertices(mesh))
@@ -605,14 +605,14 @@ BOOST_AUTO_TEST_CASE(l_shape_hidden_targets_fail)
 // Real flat meshes: every trace whose segment stays inside the patch (with a margin) succeeds
 // with the Euclidean length; every trace whose segment crosses the border fails; and any
 // success is the straight segment.
-BOOST_AUTO_TEST_CASE(flat_real_meshes)
+BOOST_AUTO_TEST_CASE(flat_real_meshes, MBP_EXTENDED_TIER)
 {
   // bump-domain is (nearly) convex: no segment leaves it; woody-hi is far from convex
   const std::vector<std::pair<std::string, int> > meshes{{"bump-domain.obj", 0}, {"woody-hi.off", 1000}};
   for(const auto& mesh : meshes)
   {
     const std::string& name = mesh.first;
-    const Arrays a = read_arrays(name);
+    const Arrays a = read_arrays(mbp_test::Tier::extended, name);
     for(const Eigen::Vector3d& p : a.points)
       BOOST_REQUIRE(p.z() == 0.);
     const Tracer tracer(a.points, a.faces);
@@ -870,12 +870,15 @@ BOOST_AUTO_TEST_CASE(bumpy_disk_properties)
 
 // Real curved meshes: from the interior vertex nearest the centroid to every border vertex.
 // The paper reports that MBPSGP fails on most models: count how often the border is reached.
-BOOST_AUTO_TEST_CASE(real_curved_meshes_border_reach)
+MBP_TIERED_TEST_CASE(real_curved_meshes_border_reach)
 {
-  for(const std::string name : {"matthew_nefertiti.off", "lilium.obj", "venus.off", "mushroom.off", "patch-01.off",
-                                "spothead.obj", "maxFace.obj", "bimba_hole.off", "lion-head.off"})
+  const std::vector<std::string> names = (tier == mbp_test::Tier::core)
+    ? std::vector<std::string>{"nefertiti.off", "mushroom.off", "patch-01.off", "lion-head.off"}
+    : std::vector<std::string>{"matthew_nefertiti.off", "lilium.obj", "venus.off", "spothead.obj", "maxFace.obj",
+                               "bimba_hole.off"};
+  for(const std::string& name : names)
   {
-    const Arrays a = read_arrays(name);
+    const Arrays a = read_arrays(tier, name);
     const Tracer tracer(a.points, a.faces);
     BOOST_REQUIRE(tracer.is_valid());
     const Face_boxes boxes(a);

@@ -7,13 +7,21 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// Shared helpers of the test suites: generated meshes with known geometry, and the location
-// of the real meshes (../shared/data/meshes, or CGAL's data meshes as a fallback).
+// Shared helpers of the test suites: generated meshes with known geometry, and the real meshes
+// of the two tiers of tests:
+//  - core tier (every clone): CGAL's data meshes (Debian's libcgal-demo, extracted into the
+//    build tree) and the small meshes of test/data; core_mesh(name);
+//  - extended tier: the project's meshes in MBP_SHARED_MESH_DIR (../shared/data/meshes by
+//    default); shared_mesh(name). Extended test cases carry the Boost.Test label "extended"
+//    (MBP_EXTENDED_TIER, MBP_TIERED_TEST_CASE): CTest runs them as the separate entry
+//    SUITE_extended, reported as skipped when that folder is absent (test/CMakeLists.txt).
 
 #ifndef MBP_TEST_SUPPORT_H
 #define MBP_TEST_SUPPORT_H
 
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/number_type_config.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -24,18 +32,32 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <string>
 #include <vector>
 
+// The decorator of an extended test case: BOOST_AUTO_TEST_CASE(name, MBP_EXTENDED_TIER).
+#define MBP_EXTENDED_TIER * boost::unit_test::label("extended")
+
+// A test case run on both tiers: `name` (core) and `name_extended` (extended), one body with
+// the parameter `tier` (mbp_test::Tier) that chooses the meshes:
+//   MBP_TIERED_TEST_CASE(some_property) { for(name : (tier == mbp_test::Tier::core) ? ... : ...) }
+#define MBP_TIERED_TEST_CASE(name)                                                     \
+  static void name##_body(mbp_test::Tier tier);                                        \
+  BOOST_AUTO_TEST_CASE(name) { name##_body(mbp_test::Tier::core); }                    \
+  BOOST_AUTO_TEST_CASE(name##_extended, MBP_EXTENDED_TIER)                             \
+  {                                                                                    \
+    name##_body(mbp_test::Tier::extended);                                             \
+  }                                                                                    \
+  static void name##_body(mbp_test::Tier tier)
+
 namespace mbp_test {
 
 // ---------------------------------------------------------------- real meshes
 
-inline std::string mesh_dir() { return MBP_MESH_DIR; }
-// "shared" (../shared/data/meshes), "cgal" (CGAL's data meshes) or "none"
-inline std::string mesh_set() { return MBP_MESH_SET; }
+enum class Tier { core, extended };
 
 inline bool file_exists(const std::string& path)
 {
@@ -43,15 +65,57 @@ inline bool file_exists(const std::string& path)
   return in.good();
 }
 
-// Path of a real mesh; fails the test (never skips silently) when it is missing.
-inline std::string require_mesh(const std::string& name)
+// CGAL's data meshes ("" when the archive was not found at configure time).
+inline std::string cgal_mesh_dir() { return MBP_CGAL_MESH_DIR; }
+// The small meshes committed with the tests (test/data, README.md there).
+inline std::string test_data_dir() { return MBP_TEST_DATA_DIR; }
+// The project's meshes of the extended tier (may be absent): the environment variable
+// MBP_SHARED_MESH_DIR when set (test/extended_tier.sh sets it), else the configured folder.
+inline std::string shared_mesh_dir()
 {
-  BOOST_REQUIRE_MESSAGE(mesh_set() != "none",
-                        "no real meshes: neither ../shared/data/meshes nor CGAL's data.tar.gz");
-  const std::string path = mesh_dir() + "/" + name;
-  BOOST_REQUIRE_MESSAGE(file_exists(path), "missing test mesh " << path);
+  const char* dir = std::getenv("MBP_SHARED_MESH_DIR");
+  return (dir != nullptr && *dir != '\0') ? std::string(dir) : std::string(MBP_SHARED_MESH_DIR);
+}
+
+// Path of a core-tier mesh: test/data first, then CGAL's data meshes. Fails the test (never
+// skips) when it is missing: every clone has these.
+inline std::string core_mesh(const std::string& name)
+{
+  const std::string local = test_data_dir() + "/" + name;
+  if(file_exists(local))
+    return local;
+  BOOST_REQUIRE_MESSAGE(!cgal_mesh_dir().empty(),
+                        "CGAL's data meshes were not found at configure time (MBP_CGAL_DATA_ARCHIVE: "
+                        "Debian package libcgal-demo, installed by scripts/setup.sh)");
+  const std::string path = cgal_mesh_dir() + "/" + name;
+  BOOST_REQUIRE_MESSAGE(file_exists(path), "missing core test mesh " << path);
   return path;
 }
+
+// Path of an extended-tier mesh. Fails the test when it is missing: CTest only runs the
+// extended tier when the folder is there.
+inline std::string shared_mesh(const std::string& name)
+{
+  const std::string path = shared_mesh_dir() + "/" + name;
+  BOOST_REQUIRE_MESSAGE(file_exists(path), "missing extended-tier mesh " << path
+                        << " (the extended tier needs MBP_SHARED_MESH_DIR)");
+  return path;
+}
+
+inline std::string tier_mesh(Tier tier, const std::string& name)
+{
+  return tier == Tier::core ? core_mesh(name) : shared_mesh(name);
+}
+
+// Transitional, for the suites not yet split into tiers: their real meshes are the core
+// tier's. To be removed once no suite calls them.
+inline std::string mesh_set() { return "cgal"; }
+inline std::string require_mesh(const std::string& name) { return core_mesh(name); }
+
+// The kernel of a mesh's points (what CGAL's parameterizers use for their UVs).
+template <class Mesh>
+using Kernel_of = typename CGAL::Kernel_traits<typename boost::property_traits<
+  typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>::value_type>::Kernel;
 
 template <class Mesh>
 void read_mesh(const std::string& path, Mesh& mesh)
