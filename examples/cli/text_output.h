@@ -7,26 +7,18 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// Text output of the measured_parameterization program: number formatting, a small JSON
-// writer, and output files that appear only when everything was written (a temporary file
-// beside the target, renamed at the end, removed on failure). No CGAL here.
+// Text output of the measured_parameterization program: number formatting and a small JSON
+// writer (the output files themselves: file_output.h). No CGAL here.
 
 #ifndef MBP_CLI_TEXT_OUTPUT_H
 #define MBP_CLI_TEXT_OUTPUT_H
 
 #include <charconv>
-#include <cerrno>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
 #include <string>
-#include <utility>
 #include <vector>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace mbp_cli {
 
@@ -197,102 +189,6 @@ private:
   };
   std::string m_text;
   std::vector<Container> m_open;
-};
-
-/// Files written all or nothing: `add()` writes the contents of each file into a temporary
-/// file in the same directory, `commit()` renames them all to their names. Until `commit()`
-/// succeeds, the destructor removes every temporary file and every file already renamed.
-class Output_files
-{
-public:
-  Output_files() = default;
-  Output_files(const Output_files&) = delete;
-  Output_files& operator=(const Output_files&) = delete;
-  ~Output_files() { discard(); }
-
-  /// writes `contents` into a temporary file beside `path`. Returns an error message, or an
-  /// empty string on success.
-  std::string add(const std::string& path, const std::string& contents)
-  {
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    if(target.filename().empty())
-      return "cannot write '" + path + "': not a file name";
-    std::error_code ec;
-    if(fs::is_directory(target, ec))
-      return "cannot write '" + path + "': it is a directory";
-
-    // A hidden name in the target's directory, so that the final rename stays within one
-    // file system; O_EXCL never reuses an existing file. Mode 0666 minus the umask, as the
-    // target would get.
-    std::string temporary;
-    int fd = -1;
-    for(int attempt = 0; fd < 0 && attempt < 100; ++attempt)
-    {
-      temporary = (target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                           std::to_string(::getpid()) + "-" + std::to_string(attempt))).string();
-      fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-      if(fd < 0 && errno != EEXIST)
-        return "cannot write '" + path + "': " + std::strerror(errno);
-    }
-    if(fd < 0)
-      return "cannot write '" + path + "': no free temporary file name";
-    m_files.push_back({path, temporary, false});
-
-    const char* data = contents.data();
-    std::size_t left = contents.size();
-    while(left > 0)
-    {
-      const ssize_t n = ::write(fd, data, left);
-      if(n < 0 && errno == EINTR)
-        continue;
-      if(n <= 0)
-      {
-        const int error = errno;
-        ::close(fd);
-        return "cannot write '" + path + "': " + std::strerror(error);
-      }
-      data += n;
-      left -= static_cast<std::size_t>(n);
-    }
-    if(::close(fd) != 0)
-      return "cannot write '" + path + "': " + std::strerror(errno);
-    return std::string();
-  }
-
-  /// renames every temporary file to its target. Returns an error message (and then removes
-  /// every file), or an empty string on success.
-  std::string commit()
-  {
-    for(File& f : m_files)
-    {
-      if(std::rename(f.temporary.c_str(), f.path.c_str()) != 0)
-      {
-        const std::string message = "cannot write '" + f.path + "': " + std::strerror(errno);
-        discard();
-        return message;
-      }
-      f.renamed = true;
-    }
-    m_files.clear();
-    return std::string();
-  }
-
-private:
-  struct File
-  {
-    std::string path, temporary;
-    bool renamed;
-  };
-
-  void discard()
-  {
-    for(const File& f : m_files)
-      std::remove(f.renamed ? f.path.c_str() : f.temporary.c_str());
-    m_files.clear();
-  }
-
-  std::vector<File> m_files;
 };
 
 } // namespace mbp_cli

@@ -1,0 +1,1258 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+// Input of the measured_parameterization program: strict streaming readers of OFF, OBJ, PLY
+// (ASCII, binary little- and big-endian) and STL (ASCII and binary) into a polygon soup.
+//
+// - Regular files only: a FIFO, a device, a socket or a directory is refused by name (checked
+//   with stat() before opening; opened with O_NONBLOCK, so that a FIFO swapped in between
+//   never blocks, then checked again with fstat()).
+// - Streaming: the file is read in blocks of `Input_file::block_size` bytes; no whole-file
+//   read. A line longer than `max_line_length` is an error.
+// - Bounded memory: the counts an OFF or PLY header announces, and every PLY list, must fit
+//   in the bytes of the file (each entry takes at least one or two bytes), so the soup never
+//   exceeds a small multiple of the file size; OBJ and STL grow with what they read, and the
+//   file size (a regular file) bounds that too.
+// - Strict: every number is parsed whole (std::from_chars), every index checked, every
+//   message names the line (text) or the element (binary) and the problem.
+// No CGAL here: the soup is plain arrays (mesh_input.h builds the mesh).
+
+#ifndef MBP_CLI_MESH_READER_H
+#define MBP_CLI_MESH_READER_H
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace mbp_cli {
+
+/// A polygon soup: points in file order, and the faces as one array of 0-based point indices
+/// (`face_end[i]` is one past the last corner of face `i`).
+struct Polygon_soup
+{
+  std::vector<std::array<double, 3> > points;
+  std::vector<std::uint32_t> corners;
+  std::vector<std::uint32_t> face_end;
+
+  std::size_t number_of_faces() const { return face_end.size(); }
+  std::size_t face_begin(std::size_t i) const { return i == 0 ? 0 : face_end[i - 1]; }
+  std::size_t face_size(std::size_t i) const { return face_end[i] - face_begin(i); }
+};
+
+/// Why reading failed: a message, and whether the problem is a non-finite coordinate (the
+/// program then reports the library's code for it).
+struct Read_error
+{
+  std::string message;
+  bool non_finite = false;
+
+  bool failed() const { return !message.empty(); }
+};
+
+/// What kind of file system object `st` is, for a message ("a FIFO", "a directory", ...).
+inline const char* file_kind(const struct stat& st)
+{
+  if(S_ISDIR(st.st_mode))
+    return "a directory";
+  if(S_ISFIFO(st.st_mode))
+    return "a FIFO (named pipe)";
+  if(S_ISCHR(st.st_mode))
+    return "a character device";
+  if(S_ISBLK(st.st_mode))
+    return "a block device";
+  if(S_ISSOCK(st.st_mode))
+    return "a socket";
+  if(S_ISLNK(st.st_mode))
+    return "a symbolic link";
+  return S_ISREG(st.st_mode) ? "a regular file" : "not a regular file";
+}
+
+/// A regular file opened for reading, read in blocks.
+class Input_file
+{
+public:
+  static constexpr std::size_t block_size = std::size_t(1) << 20;
+
+  Input_file() = default;
+  Input_file(const Input_file&) = delete;
+  Input_file& operator=(const Input_file&) = delete;
+  ~Input_file()
+  {
+    if(m_fd >= 0)
+      ::close(m_fd);
+  }
+
+  /// opens `path`, a regular file (after following symbolic links). Returns the message of
+  /// the failure, or an empty string.
+  std::string open(const std::string& path)
+  {
+    struct stat st;
+    if(::stat(path.c_str(), &st) != 0)
+      return errno == ENOENT ? std::string("no such file") : std::string("cannot open: ") + std::strerror(errno);
+    if(S_ISDIR(st.st_mode))
+      return "it is a directory, not a mesh file";
+    if(!S_ISREG(st.st_mode))
+      return std::string("it is ") + file_kind(st) + ", not a regular file (only regular files are read)";
+    // O_NONBLOCK: if a FIFO replaced the file since stat(), open() does not wait for a writer
+    m_fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if(m_fd < 0)
+      return std::string("cannot open: ") + std::strerror(errno);
+    struct stat opened;
+    if(::fstat(m_fd, &opened) != 0 || !S_ISREG(opened.st_mode))
+      return "it is not a regular file (only regular files are read)";
+    m_size = static_cast<std::uint64_t>(opened.st_size);
+    return std::string();
+  }
+
+  std::uint64_t size() const { return m_size; }
+
+  /// back to the first byte
+  bool rewind() { return ::lseek(m_fd, 0, SEEK_SET) == 0; }
+
+  /// reads up to `n` bytes; 0 at the end of the file, -1 on an error (errno set)
+  long read(char* buffer, std::size_t n)
+  {
+    for(;;)
+    {
+      const ssize_t r = ::read(m_fd, buffer, n);
+      if(r < 0 && errno == EINTR)
+        continue;
+      return static_cast<long>(r);
+    }
+  }
+
+private:
+  int m_fd = -1;
+  std::uint64_t m_size = 0;
+};
+
+/// checks that `path` names a regular file (after following links) that can be opened
+/// without blocking: an empty string, or the message (a FIFO, a device, a directory...)
+inline std::string check_regular_input(const std::string& path)
+{
+  Input_file file;
+  return file.open(path);
+}
+
+namespace reader_internal {
+
+const std::size_t max_line_length = std::size_t(64) << 20;  // a face of millions of vertices still fits
+
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+/// The next whitespace-separated word of `rest` (empty at the end), removed from `rest`.
+inline std::string_view next_word(std::string_view& rest)
+{
+  std::size_t i = 0;
+  while(i < rest.size() && is_blank(rest[i]))
+    ++i;
+  std::size_t j = i;
+  while(j < rest.size() && !is_blank(rest[j]))
+    ++j;
+  const std::string_view word = rest.substr(i, j - i);
+  rest.remove_prefix(j);
+  return word;
+}
+
+/// `s` for a message: at most 40 characters, control characters replaced.
+inline std::string shown(std::string_view s)
+{
+  std::string t(s.substr(0, 40));
+  for(char& c : t)
+    if(static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      c = '?';
+  return s.size() > 40 ? t + "..." : t;
+}
+
+/// Buffered reading of a file: lines (text formats) or bytes (binary formats). Keeps the line
+/// number and the number of bytes consumed.
+class Stream
+{
+public:
+  explicit Stream(Input_file& file) : m_file(file), m_buffer(Input_file::block_size) { }
+
+  const std::string& error() const { return m_error; }
+  std::size_t line_number() const { return m_line; }
+  std::uint64_t consumed() const { return m_consumed; }
+  std::uint64_t remaining() const { return m_file.size() > m_consumed ? m_file.size() - m_consumed : 0; }
+
+  /// the next line, without its end of line; false at the end of the file or on an error
+  bool next_line(std::string_view& line)
+  {
+    for(std::size_t searched = m_begin;;)
+    {
+      const char* base = m_buffer.data();
+      const void* nl = std::memchr(base + searched, '\n', m_end - searched);
+      if(nl != nullptr)
+      {
+        const std::size_t at = static_cast<std::size_t>(static_cast<const char*>(nl) - base);
+        line = std::string_view(base + m_begin, at - m_begin);
+        m_consumed += at + 1 - m_begin;
+        m_begin = at + 1;
+        ++m_line;
+        return true;
+      }
+      searched = m_end;
+      if(m_eof)
+      {
+        if(m_begin == m_end)
+          return false;
+        line = std::string_view(base + m_begin, m_end - m_begin);  // the last line, no '\n'
+        m_consumed += m_end - m_begin;
+        m_begin = m_end;
+        ++m_line;
+        return true;
+      }
+      const std::size_t kept = m_end - m_begin;
+      if(kept >= max_line_length)
+      {
+        m_error = "line " + std::to_string(m_line + 1) + " is longer than " +
+                  std::to_string(max_line_length >> 20) + " MiB (not a mesh file, or corrupt)";
+        return false;
+      }
+      if(!fill())
+        return false;
+      searched = m_begin + kept;
+    }
+  }
+
+  /// copies the next `n` bytes to `out`; false (and an error) at a premature end of the file
+  bool read_bytes(char* out, std::size_t n)
+  {
+    while(m_end - m_begin < n)
+    {
+      const std::size_t have = m_end - m_begin;
+      std::memcpy(out, m_buffer.data() + m_begin, have);
+      out += have;
+      n -= have;
+      m_consumed += have;
+      m_begin = m_end;
+      if(m_eof || !fill() || m_end == m_begin)
+      {
+        if(m_error.empty())
+          m_error = "unexpected end of the file";
+        return false;
+      }
+    }
+    std::memcpy(out, m_buffer.data() + m_begin, n);
+    m_begin += n;
+    m_consumed += n;
+    return true;
+  }
+
+private:
+  // moves the unread bytes to the front, grows the buffer when a line fills it, reads a block
+  bool fill()
+  {
+    const std::size_t kept = m_end - m_begin;
+    if(m_begin > 0)
+    {
+      std::memmove(m_buffer.data(), m_buffer.data() + m_begin, kept);
+      m_begin = 0;
+      m_end = kept;
+    }
+    if(m_buffer.size() - m_end < Input_file::block_size / 2)
+      m_buffer.resize(m_buffer.size() * 2);
+    const long r = m_file.read(m_buffer.data() + m_end, m_buffer.size() - m_end);
+    if(r < 0)
+    {
+      m_error = std::string("cannot read: ") + std::strerror(errno);
+      return false;
+    }
+    if(r == 0)
+      m_eof = true;
+    m_end += static_cast<std::size_t>(r);
+    return true;
+  }
+
+  Input_file& m_file;
+  std::vector<char> m_buffer;
+  std::size_t m_begin = 0, m_end = 0;
+  bool m_eof = false;
+  std::size_t m_line = 0;
+  std::uint64_t m_consumed = 0;
+  std::string m_error;
+};
+
+/// parses the whole of `word` as a double (a leading '+' is allowed). Returns an empty string,
+/// or why it is not a finite number; `non_finite` tells a NaN, an infinity or an overflow.
+inline std::string parse_double(std::string_view word, double& value, bool& non_finite)
+{
+  non_finite = false;
+  std::string_view w = word;
+  if(w.size() > 1 && w[0] == '+' && w[1] != '-')
+    w.remove_prefix(1);
+  const std::from_chars_result r = std::from_chars(w.data(), w.data() + w.size(), value);
+  if(r.ec == std::errc::result_out_of_range && r.ptr == w.data() + w.size())
+  {
+    // a magnitude beyond double: huge overflows to infinity, tiny underflows to zero (kept)
+    const std::size_t e = w.find_first_of("eE");
+    if(e != std::string_view::npos && e + 1 < w.size() && w[e + 1] == '-')
+    {
+      value = 0.;
+      return std::string();
+    }
+    non_finite = true;
+    return "the coordinate '" + shown(word) + "' is too large for a double (it overflows to infinity)";
+  }
+  if(r.ec != std::errc() || r.ptr != w.data() + w.size() || w.empty())
+    return "'" + shown(word) + "' is not a number";
+  if(!std::isfinite(value))
+  {
+    non_finite = true;
+    return "the coordinate '" + shown(word) + "' is not a finite number (NaN and infinite coordinates are not accepted)";
+  }
+  return std::string();
+}
+
+/// parses the whole of `word` as a non-negative integer below 2^63. Returns an empty string or
+/// why it is not one.
+inline std::string parse_count(std::string_view word, std::uint64_t& value, const char* what)
+{
+  const std::from_chars_result r = std::from_chars(word.data(), word.data() + word.size(), value);
+  if(r.ec == std::errc::result_out_of_range)
+    return std::string(what) + " '" + shown(word) + "' is too large";
+  if(word.empty() || r.ec != std::errc() || r.ptr != word.data() + word.size())
+    return std::string(what) + " '" + shown(word) + "' is not a non-negative integer";
+  return std::string();
+}
+
+/// the soup's limits: 32-bit indices (as CGAL::Surface_mesh)
+const std::uint64_t max_points = std::numeric_limits<std::uint32_t>::max() - 1;
+
+inline std::string at_line(std::size_t line) { return "line " + std::to_string(line) + ": "; }
+
+/// checks the faces' indices against the number of points; `base` is 1 for OBJ (in messages)
+inline std::string check_indices(const Polygon_soup& soup, int base)
+{
+  const std::size_t n = soup.points.size();
+  for(std::size_t f = 0, k = 0; f < soup.face_end.size(); ++f)
+    for(; k < soup.face_end[f]; ++k)
+      if(soup.corners[k] >= n)
+        return "face " + std::to_string(f) + " uses vertex index " + std::to_string(std::uint64_t(soup.corners[k]) + base) +
+               (base == 1 ? " (1-based)" : " (0-based)") + ", but the file has " + std::to_string(n) + " vertices";
+  return std::string();
+}
+
+/// adds a face's end, with the 32-bit limit on the number of corners
+inline bool end_face(Polygon_soup& soup)
+{
+  if(soup.corners.size() >= max_points)
+    return false;
+  soup.face_end.push_back(static_cast<std::uint32_t>(soup.corners.size()));
+  return true;
+}
+
+// ------------------------------------------------------------------------------------ OFF
+
+inline std::string strip_off_comment(std::string_view& line)
+{
+  const std::size_t hash = line.find('#');
+  if(hash != std::string_view::npos)
+    line = line.substr(0, hash);
+  return std::string();
+}
+
+inline Read_error read_off(Input_file& file, Polygon_soup& soup)
+{
+  Stream in(file);
+  Read_error e;
+  auto fail = [&](const std::string& m) {
+    e.message = in.error().empty() ? m : in.error();
+    return e;
+  };
+  std::string_view line, rest;
+  // the keyword: [ST][C][N][4][n]OFF, alone or followed by the counts
+  auto next_content_line = [&]() {
+    while(in.next_line(line))
+    {
+      strip_off_comment(line);
+      rest = line;
+      std::string_view probe = rest;
+      if(!next_word(probe).empty())
+        return true;
+    }
+    return false;
+  };
+  if(!next_content_line())
+    return fail("the file has no OFF keyword (it is empty or only comments)");
+  const std::string_view keyword = next_word(rest);
+  std::size_t i = 0;
+  const bool texture = keyword.substr(0, 2) == "ST";
+  if(texture)
+    i = 2;
+  bool color = false, normal = false, homogeneous = false, dimension = false;
+  if(i < keyword.size() && keyword[i] == 'C') { color = true; ++i; }
+  if(i < keyword.size() && keyword[i] == 'N') { normal = true; ++i; }
+  if(i < keyword.size() && keyword[i] == '4') { homogeneous = true; ++i; }
+  if(i < keyword.size() && keyword[i] == 'n') { dimension = true; ++i; }
+  if(keyword.substr(i) != "OFF")
+    return fail(at_line(in.line_number()) + "the file does not start with an OFF keyword ([ST][C][N][4][n]OFF), but with '" +
+                shown(keyword) + "'");
+  (void)color;
+  if(homogeneous)
+    return fail(at_line(in.line_number()) + "4OFF (homogeneous coordinates) is not supported: convert it to OFF");
+  std::string_view after = rest;
+  if(next_word(after) == "BINARY")
+    return fail("binary OFF files are not supported by this program (convert it to ASCII OFF, PLY or OBJ)");
+
+  // the dimension (nOFF) and the counts V F E, on one line
+  if(next_word(after = rest).empty() && !next_content_line())
+    return fail("the OFF header has no vertex and face counts (truncated)");
+  const std::size_t counts_line = in.line_number();
+  std::vector<std::string_view> words;
+  for(std::string_view w = next_word(rest); !w.empty(); w = next_word(rest))
+    words.push_back(w);
+  if(dimension && !words.empty())
+  {
+    std::uint64_t d = 0;
+    const std::string m = parse_count(words.front(), d, "the dimension");
+    if(!m.empty())
+      return fail(at_line(counts_line) + m);
+    if(d != 3)
+      return fail(at_line(counts_line) + "nOFF of dimension " + std::to_string(d) + " is not supported (only 3)");
+    words.erase(words.begin());
+    if(words.empty())
+    {
+      if(!next_content_line())
+        return fail("the OFF header has no vertex and face counts (truncated)");
+      for(std::string_view w = next_word(rest); !w.empty(); w = next_word(rest))
+        words.push_back(w);
+    }
+  }
+  if(words.size() != 3)
+  {
+    std::string found;
+    for(const std::string_view& w : words)
+      found += (found.empty() ? "" : " ") + shown(w);
+    return fail(at_line(in.line_number()) + "the OFF counts line '" + found + "' has " + std::to_string(words.size()) +
+                (words.size() == 1 ? " number" : " numbers") +
+                "; it needs exactly three: vertices, faces and edges (the edge count may be 0)");
+  }
+  std::uint64_t counts[3];
+  const char* names[3] = {"the vertex count", "the face count", "the edge count"};
+  for(int k = 0; k < 3; ++k)
+  {
+    const std::string m = parse_count(words[std::size_t(k)], counts[k], names[k]);
+    if(!m.empty())
+      return fail(at_line(in.line_number()) + m);
+  }
+  const std::uint64_t nv = counts[0], nf = counts[1];
+  // every vertex line holds at least 6 bytes ("0 0 0\n"), every face line 2 ("0\n")
+  if(nv > in.remaining() / 6 || nf > in.remaining() / 2 || 6 * nv + 2 * nf > in.remaining())
+    return fail(at_line(in.line_number()) + "the header announces " + std::to_string(nv) + " vertices and " +
+                std::to_string(nf) + " faces, more than the " + std::to_string(in.remaining()) +
+                " bytes after it can hold (corrupt or truncated)");
+  if(nv > max_points)
+    return fail("the file has more than 2^32 - 2 vertices");
+  soup.points.reserve(nv);
+  soup.face_end.reserve(nf);
+  soup.corners.reserve(3 * nf);
+
+  const std::size_t per_vertex = 3 + (normal ? 3 : 0) + (texture ? 2 : 0);
+  for(std::uint64_t v = 0; v < nv; ++v)
+  {
+    if(!next_content_line())
+      return fail("the file ends after " + std::to_string(v) + " of its " + std::to_string(nv) + " vertices (truncated)");
+    std::array<double, 3> p;
+    std::size_t count = 0;
+    for(std::string_view w = next_word(rest); !w.empty(); w = next_word(rest), ++count)
+    {
+      double x = 0.;
+      bool non_finite = false;
+      const std::string m = parse_double(w, x, non_finite);
+      if(!m.empty() && (count < 3 || !non_finite))  // NaN in a color or a normal is not ours to judge
+      {
+        e.non_finite = non_finite;
+        return fail(at_line(in.line_number()) + "vertex " + std::to_string(v) + ": " + m);
+      }
+      if(count < 3)
+        p[count] = x;
+    }
+    const std::size_t colors = count >= per_vertex ? count - per_vertex : std::size_t(-1);
+    if(!(colors == 0 || colors == 1 || colors == 3 || colors == 4))
+      return fail(at_line(in.line_number()) + "vertex " + std::to_string(v) + " has " + std::to_string(count) +
+                  " numbers; expected " + std::to_string(per_vertex) + " (then 0, 1, 3 or 4 color entries)");
+    soup.points.push_back(p);
+  }
+  for(std::uint64_t f = 0; f < nf; ++f)
+  {
+    if(!next_content_line())
+      return fail("the file ends after " + std::to_string(f) + " of its " + std::to_string(nf) + " faces (truncated)");
+    std::uint64_t n = 0;
+    std::string m = parse_count(next_word(rest), n, "the vertex count");
+    if(!m.empty())
+      return fail(at_line(in.line_number()) + "face " + std::to_string(f) + ": " + m);
+    if(n > line.size())
+      return fail(at_line(in.line_number()) + "face " + std::to_string(f) + " announces " + std::to_string(n) +
+                  " vertices, more than its line holds (corrupt)");
+    for(std::uint64_t k = 0; k < n; ++k)
+    {
+      const std::string_view w = next_word(rest);
+      if(w.empty())
+        return fail(at_line(in.line_number()) + "face " + std::to_string(f) + " announces " + std::to_string(n) +
+                    " vertices but lists " + std::to_string(k));
+      std::uint64_t index = 0;
+      if(!(m = parse_count(w, index, "the vertex index")).empty())
+        return fail(at_line(in.line_number()) + "face " + std::to_string(f) + ": " + m);
+      if(index >= nv)
+        return fail(at_line(in.line_number()) + "face " + std::to_string(f) + " uses vertex index " +
+                    std::to_string(index) + " (0-based), but the file has " + std::to_string(nv) + " vertices");
+      soup.corners.push_back(static_cast<std::uint32_t>(index));
+    }
+    // then 0, 1, 3 or 4 color entries
+    std::size_t colors = 0;
+    for(std::string_view w = next_word(rest); !w.empty(); w = next_word(rest), ++colors)
+    {
+      double x = 0.;
+      bool non_finite = false;
+      if(!parse_double(w, x, non_finite).empty() && !non_finite)
+        return fail(at_line(in.line_number()) + "face " + std::to_string(f) + ": '" + shown(w) +
+                    "' after its vertex indices is not a number (more indices than announced, or a malformed color)");
+    }
+    if(colors == 2 || colors > 4)
+      return fail(at_line(in.line_number()) + "face " + std::to_string(f) + " has " + std::to_string(colors) +
+                  " numbers after its " + std::to_string(n) + " vertex indices (expected 0, 1, 3 or 4 color entries)");
+    if(!end_face(soup))
+      return fail("the file has more than 2^32 - 2 face corners");
+  }
+  while(next_content_line())
+    return fail(at_line(in.line_number()) + "unexpected data after the last face ('" + shown(line) + "')");
+  if(!in.error().empty())
+    return fail(in.error());
+  return e;
+}
+
+// ------------------------------------------------------------------------------------ OBJ
+
+inline Read_error read_obj(Input_file& file, Polygon_soup& soup)
+{
+  Stream in(file);
+  Read_error e;
+  auto fail = [&](const std::string& m) {
+    e.message = at_line(in.line_number()) + m;
+    return e;
+  };
+  std::string_view line;
+  while(in.next_line(line))
+  {
+    std::string_view rest = line;
+    const std::string_view tag = next_word(rest);
+    if(tag.empty() || tag[0] == '#')
+      continue;
+    if(tag == "v")
+    {
+      if(soup.points.size() >= max_points)
+        return fail("more than 2^32 - 2 vertices");
+      std::array<double, 3> p;
+      std::size_t count = 0;
+      for(std::string_view w = next_word(rest); !w.empty() && w[0] != '#'; w = next_word(rest), ++count)
+      {
+        double x = 0.;
+        bool non_finite = false;
+        const std::string m = parse_double(w, x, non_finite);
+        if(!m.empty() && (count < 3 || !non_finite))
+        {
+          e.non_finite = non_finite;
+          return fail("vertex " + std::to_string(soup.points.size()) + ": " + m);
+        }
+        if(count < 3)
+          p[count] = x;
+      }
+      // x y z, then an optional weight w, or a color r g b [a]
+      if(count < 3 || count > 7 || count == 5)
+        return fail("a 'v' line needs 3 coordinates (then an optional weight or color), but has " +
+                    std::to_string(count) + " numbers");
+      soup.points.push_back(p);
+    }
+    else if(tag == "f")
+    {
+      const std::size_t defined = soup.points.size();
+      std::size_t n = 0;
+      for(std::string_view w = next_word(rest); !w.empty() && w[0] != '#'; w = next_word(rest), ++n)
+      {
+        // v, v/vt, v//vn or v/vt/vn: the vertex index is before the first '/'
+        const std::string_view index_text = w.substr(0, w.find('/'));
+        const bool negative = !index_text.empty() && index_text[0] == '-';
+        const std::string_view digits = negative ? index_text.substr(1) : index_text;
+        std::uint64_t k = 0;
+        const std::from_chars_result r = std::from_chars(digits.data(), digits.data() + digits.size(), k);
+        if(digits.empty() || r.ptr != digits.data() + digits.size() || (r.ec != std::errc() && r.ec != std::errc::result_out_of_range))
+          return fail("face " + std::to_string(soup.face_end.size()) + ": '" + shown(w) + "' is not a vertex index");
+        if(r.ec == std::errc::result_out_of_range || k > max_points)
+          return fail("face " + std::to_string(soup.face_end.size()) + ": vertex index " + shown(index_text) +
+                      " is out of range (the largest index this program reads is " + std::to_string(max_points) + ")");
+        if(k == 0)
+          return fail("face " + std::to_string(soup.face_end.size()) +
+                      ": vertex index 0 is invalid in OBJ (indices start at 1; negative indices count back from the last vertex)");
+        std::uint64_t index = k - 1;
+        if(negative)
+        {
+          if(k > defined)
+            return fail("face " + std::to_string(soup.face_end.size()) + ": relative vertex index " + shown(index_text) +
+                        " refers to before the first vertex (" + std::to_string(defined) + " vertices precede it)");
+          index = defined - k;
+        }
+        soup.corners.push_back(static_cast<std::uint32_t>(index));
+      }
+      if(!end_face(soup))
+        return fail("more than 2^32 - 2 face corners");
+    }
+    else if(tag == "vt" || tag == "vn" || tag == "vp" || tag == "o" || tag == "g" || tag == "s" || tag == "usemtl" ||
+            tag == "mtllib" || tag == "l" || tag == "p" || tag == "mg" || tag == "usemap" || tag == "maplib" ||
+            tag == "lod" || tag == "shadow_obj" || tag == "trace_obj" || tag == "bevel" || tag == "c_interp" ||
+            tag == "d_interp")
+      continue;  // texture coordinates, normals, groups, materials, polylines, points: not used
+    else if(tag == "cstype" || tag == "deg" || tag == "bmat" || tag == "step" || tag == "curv" || tag == "curv2" ||
+            tag == "surf" || tag == "parm" || tag == "trim" || tag == "hole" || tag == "scrv" || tag == "sp" ||
+            tag == "end" || tag == "con" || tag == "ctech" || tag == "stech")
+      return fail("free-form geometry ('" + std::string(tag) + "') is not supported: triangulate it first");
+    else
+      return fail("'" + shown(tag) + "' is not an OBJ statement (not an OBJ file, or corrupt)");
+  }
+  if(!in.error().empty())
+  {
+    e.message = in.error();
+    return e;
+  }
+  e.message = check_indices(soup, 1);
+  return e;
+}
+
+// ------------------------------------------------------------------------------------ PLY
+
+enum class Ply_type { none, int8, uint8, int16, uint16, int32, uint32, float32, float64 };
+
+inline Ply_type ply_type(std::string_view t)
+{
+  if(t == "char" || t == "int8") return Ply_type::int8;
+  if(t == "uchar" || t == "uint8") return Ply_type::uint8;
+  if(t == "short" || t == "int16") return Ply_type::int16;
+  if(t == "ushort" || t == "uint16") return Ply_type::uint16;
+  if(t == "int" || t == "int32") return Ply_type::int32;
+  if(t == "uint" || t == "uint32") return Ply_type::uint32;
+  if(t == "float" || t == "float32") return Ply_type::float32;
+  if(t == "double" || t == "float64") return Ply_type::float64;
+  return Ply_type::none;
+}
+
+inline std::size_t ply_size(Ply_type t)
+{
+  switch(t)
+  {
+    case Ply_type::int8: case Ply_type::uint8: return 1;
+    case Ply_type::int16: case Ply_type::uint16: return 2;
+    case Ply_type::int32: case Ply_type::uint32: case Ply_type::float32: return 4;
+    case Ply_type::float64: return 8;
+    default: return 0;
+  }
+}
+
+inline bool ply_integral(Ply_type t) { return t != Ply_type::float32 && t != Ply_type::float64 && t != Ply_type::none; }
+
+struct Ply_property
+{
+  std::string name;
+  Ply_type type = Ply_type::none;
+  Ply_type count_type = Ply_type::none;  // none: a scalar
+  int role = -1;                          // vertex: 0, 1, 2 for x, y, z; face: 3 for the index list
+};
+
+struct Ply_element
+{
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<Ply_property> properties;
+};
+
+/// decodes a binary PLY value of type `t` from `bytes` (in file order)
+inline double ply_decode(Ply_type t, const unsigned char* bytes, bool swap)
+{
+  unsigned char b[8];
+  const std::size_t n = ply_size(t);
+  for(std::size_t k = 0; k < n; ++k)
+    b[k] = bytes[swap ? n - 1 - k : k];
+  switch(t)
+  {
+    case Ply_type::int8: { std::int8_t v; std::memcpy(&v, b, 1); return v; }
+    case Ply_type::uint8: return b[0];
+    case Ply_type::int16: { std::int16_t v; std::memcpy(&v, b, 2); return v; }
+    case Ply_type::uint16: { std::uint16_t v; std::memcpy(&v, b, 2); return v; }
+    case Ply_type::int32: { std::int32_t v; std::memcpy(&v, b, 4); return v; }
+    case Ply_type::uint32: { std::uint32_t v; std::memcpy(&v, b, 4); return v; }
+    case Ply_type::float32: { float v; std::memcpy(&v, b, 4); return v; }
+    case Ply_type::float64: { double v; std::memcpy(&v, b, 8); return v; }
+    default: return 0.;
+  }
+}
+
+inline bool host_is_little_endian()
+{
+  const std::uint16_t one = 1;
+  unsigned char first;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
+
+inline Read_error read_ply(Input_file& file, Polygon_soup& soup)
+{
+  Stream in(file);
+  Read_error e;
+  auto fail = [&](const std::string& m) {
+    e.message = in.error().empty() ? m : in.error();
+    return e;
+  };
+  std::string_view line;
+  if(!in.next_line(line) || line.substr(0, 3) != "ply" || !next_word(line = line.substr(3)).empty())
+    return fail("the file does not start with the line 'ply'");
+
+  // ---- the header
+  std::string format;
+  std::vector<Ply_element> elements;
+  bool ended = false;
+  while(!ended && in.next_line(line))
+  {
+    std::string_view rest = line;
+    const std::string_view tag = next_word(rest);
+    const std::string here = at_line(in.line_number());
+    if(tag == "comment" || tag == "obj_info" || tag.empty())
+      continue;
+    std::vector<std::string_view> w;
+    for(std::string_view x = next_word(rest); !x.empty(); x = next_word(rest))
+      w.push_back(x);
+    if(tag == "end_header" && w.empty())
+      ended = true;
+    else if(tag == "format")
+    {
+      if(!format.empty() || w.size() != 2 || w[1] != "1.0" ||
+         (w[0] != "ascii" && w[0] != "binary_little_endian" && w[0] != "binary_big_endian"))
+        return fail(here + "bad format line (expected 'format ascii 1.0', 'format binary_little_endian 1.0' or "
+                           "'format binary_big_endian 1.0')");
+      format = std::string(w[0]);
+    }
+    else if(tag == "element")
+    {
+      Ply_element el;
+      std::string m;
+      if(w.size() != 2)
+        return fail(here + "an element line needs a name and a count");
+      if(!(m = parse_count(w[1], el.count, "the element count")).empty())
+        return fail(here + m);
+      el.name = std::string(w[0]);
+      elements.push_back(el);
+    }
+    else if(tag == "property")
+    {
+      if(elements.empty())
+        return fail(here + "a property before any element (corrupt header)");
+      Ply_property p;
+      if(w.size() == 4 && w[0] == "list")
+      {
+        p.count_type = ply_type(w[1]);
+        p.type = ply_type(w[2]);
+        p.name = std::string(w[3]);
+        if(!ply_integral(p.count_type))
+          return fail(here + "the list count type '" + shown(w[1]) + "' is not an integer type");
+      }
+      else if(w.size() == 2)
+      {
+        p.type = ply_type(w[0]);
+        p.name = std::string(w[1]);
+      }
+      else
+        return fail(here + "malformed property line");
+      if(p.type == Ply_type::none)
+        return fail(here + "unknown property type '" + shown(w.size() == 4 ? w[2] : w[0]) + "'");
+      elements.back().properties.push_back(p);
+    }
+    else
+      return fail(here + "unknown PLY header line '" + shown(tag) + "'");
+  }
+  if(!ended)
+    return fail("the PLY header has no 'end_header' line (truncated or corrupt)");
+  if(format.empty())
+    return fail("the PLY header has no format line");
+
+  // ---- the roles: x, y, z of 'vertex'; the index list of 'face'
+  Ply_element* vertex = nullptr;
+  Ply_element* face = nullptr;
+  for(Ply_element& el : elements)
+  {
+    if(el.name == "vertex" && vertex == nullptr)
+    {
+      vertex = &el;
+      for(Ply_property& p : el.properties)
+        if(p.count_type == Ply_type::none && (p.name == "x" || p.name == "y" || p.name == "z"))
+          p.role = p.name[0] - 'x';
+      for(int r = 0; r < 3; ++r)
+        if(std::none_of(el.properties.begin(), el.properties.end(), [r](const Ply_property& p) { return p.role == r; }))
+          return fail(std::string("the vertex element has no scalar property '") + char('x' + r) + "'");
+    }
+    else if(el.name == "face" && face == nullptr)
+    {
+      face = &el;
+      for(Ply_property& p : el.properties)
+        if(p.count_type != Ply_type::none && (p.name == "vertex_indices" || p.name == "vertex_index"))
+        {
+          if(!ply_integral(p.type))
+            return fail("the face index list has the non-integer type of '" + p.name + "'");
+          p.role = 3;
+          break;
+        }
+      if(std::none_of(el.properties.begin(), el.properties.end(), [](const Ply_property& p) { return p.role == 3; }))
+        return fail("the face element has no list property 'vertex_indices' or 'vertex_index'");
+    }
+  }
+  if(vertex == nullptr)
+    return fail("the PLY file has no vertex element");
+
+  // every element instance takes at least one byte per property (binary) or two (ASCII)
+  const bool ascii = (format == "ascii");
+  {
+    long double bytes = 0.;
+    for(const Ply_element& el : elements)
+    {
+      long double per = 0.;
+      for(const Ply_property& p : el.properties)
+        per += ascii ? 2. : double(ply_size(p.count_type == Ply_type::none ? p.type : p.count_type));
+      bytes += per * el.count;
+    }
+    if(bytes > (long double)in.remaining())
+      return fail("the header announces more elements than the " + std::to_string(in.remaining()) +
+                  " bytes after it can hold (corrupt or truncated)");
+  }
+  if(vertex->count > max_points)
+    return fail("the file has more than 2^32 - 2 vertices");
+  soup.points.reserve(vertex->count);
+  if(face != nullptr)
+  {
+    soup.face_end.reserve(face->count);
+    soup.corners.reserve(3 * face->count);
+  }
+
+  const bool swap = !ascii && ((format == "binary_little_endian") != host_is_little_endian());
+  std::string_view rest;
+  // the next value of the body: a number parsed from the current ASCII line, or decoded bytes
+  auto next_value = [&](Ply_type t, double& value, std::string& m) {
+    if(ascii)
+    {
+      const std::string_view w = next_word(rest);
+      if(w.empty())
+      {
+        m = "the line ends before the element does";
+        return false;
+      }
+      bool non_finite = false;
+      if(ply_integral(t))
+      {
+        // integers are written as integers
+        long long v = 0;
+        const std::from_chars_result r = std::from_chars(w.data(), w.data() + w.size(), v);
+        if(r.ec != std::errc() || r.ptr != w.data() + w.size())
+        {
+          m = "'" + shown(w) + "' is not an integer";
+          return false;
+        }
+        value = double(v);
+        return true;
+      }
+      m = parse_double(w, value, non_finite);
+      e.non_finite = non_finite;
+      return m.empty();
+    }
+    unsigned char b[8];
+    if(!in.read_bytes(reinterpret_cast<char*>(b), ply_size(t)))
+    {
+      m = "the file ends before the element does (truncated)";
+      return false;
+    }
+    value = ply_decode(t, b, swap);
+    return true;
+  };
+
+  for(const Ply_element& el : elements)
+  {
+    const bool is_vertex = (&el == vertex), is_face = (&el == face);
+    for(std::uint64_t i = 0; i < el.count; ++i)
+    {
+      const std::string what = "element '" + el.name + "' " + std::to_string(i);
+      auto where = [&]() { return (ascii ? at_line(in.line_number()) : std::string()) + what + ": "; };
+      if(ascii)
+      {
+        do
+        {
+          if(!in.next_line(line))
+            return fail("the file ends before " + what + " (truncated)");
+          rest = line;
+        } while(next_word(line).empty());  // blank lines
+      }
+      std::array<double, 3> p = {0., 0., 0.};
+      std::string m;
+      for(const Ply_property& prop : el.properties)
+      {
+        double value = 0.;
+        if(prop.count_type == Ply_type::none)
+        {
+          if(!next_value(prop.type, value, m))
+            return fail(where() + "property '" + prop.name + "': " + m);
+          if(prop.role >= 0 && prop.role < 3)
+          {
+            if(!std::isfinite(value))
+            {
+              e.non_finite = true;
+              return fail("vertex " + std::to_string(i) + " has a non-finite coordinate (" + prop.name + " = " +
+                          (std::isnan(value) ? "nan" : "inf") + ")");
+            }
+            p[std::size_t(prop.role)] = value;
+          }
+          continue;
+        }
+        if(!next_value(prop.count_type, value, m))
+          return fail(where() + "property '" + prop.name + "': " + m);
+        const std::size_t item = ascii ? 2 : ply_size(prop.type);
+        if(value < 0. || value * double(item) > double(in.remaining()) + double(ascii ? line.size() + 1 : 0))
+          return fail(where() + "property '" + prop.name + "': a list of " + std::to_string((long long)value) +
+                      " entries, more than the rest of the file holds (corrupt)");
+        const std::uint64_t n = static_cast<std::uint64_t>(value);
+        for(std::uint64_t k = 0; k < n; ++k)
+        {
+          if(!next_value(prop.type, value, m))
+            return fail(where() + "property '" + prop.name + "': " + m);
+          if(is_face && prop.role == 3)
+          {
+            if(value < 0. || value >= double(vertex->count))
+              return fail("face " + std::to_string(i) + " uses vertex index " + std::to_string((long long)value) +
+                          " (0-based), but the file has " + std::to_string(vertex->count) + " vertices");
+            soup.corners.push_back(static_cast<std::uint32_t>(value));
+          }
+        }
+      }
+      if(ascii)
+      {
+        const std::string_view extra = next_word(rest);
+        if(!extra.empty())
+          return fail(where() + "unexpected '" + shown(extra) + "' after the element's properties");
+      }
+      if(is_vertex)
+        soup.points.push_back(p);
+      else if(is_face && !end_face(soup))
+        return fail("the file has more than 2^32 - 2 face corners");
+    }
+  }
+  if(ascii)
+    while(in.next_line(line))
+      if(!next_word(line).empty())
+        return fail(at_line(in.line_number()) + "unexpected data after the last element");
+  if(!in.error().empty())
+    return fail(in.error());
+  return e;
+}
+
+// ------------------------------------------------------------------------------------ STL
+
+/// Vertices of an STL file, merged by exact equality of their coordinates (0 and -0 equal),
+/// numbered in order of first appearance (as CGAL's STL reader does). Open addressing.
+class Stl_vertices
+{
+public:
+  explicit Stl_vertices(Polygon_soup& soup, std::size_t expected) : m_soup(soup)
+  {
+    std::size_t capacity = 1024;
+    while(capacity < 2 * expected)
+      capacity *= 2;
+    m_slots.assign(capacity, empty);
+  }
+
+  /// the index of `p`, added when new; false when there are too many vertices
+  bool index(const std::array<double, 3>& p, std::uint32_t& i)
+  {
+    if(2 * (m_soup.points.size() + 1) > m_slots.size())
+      grow();
+    std::size_t s = hash(p) & (m_slots.size() - 1);
+    for(;; s = (s + 1) & (m_slots.size() - 1))
+    {
+      const std::uint32_t k = m_slots[s];
+      if(k == empty)
+        break;
+      if(m_soup.points[k] == p)
+      {
+        i = k;
+        return true;
+      }
+    }
+    if(m_soup.points.size() >= max_points)
+      return false;
+    i = static_cast<std::uint32_t>(m_soup.points.size());
+    m_slots[s] = i;
+    m_soup.points.push_back(p);
+    return true;
+  }
+
+private:
+  static constexpr std::uint32_t empty = std::numeric_limits<std::uint32_t>::max();
+
+  static std::size_t hash(const std::array<double, 3>& p)
+  {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for(double x : p)
+    {
+      if(x == 0.)
+        x = 0.;  // -0 as 0
+      std::uint64_t b;
+      std::memcpy(&b, &x, 8);
+      h = (h ^ b) * 0xff51afd7ed558ccdull;
+      h ^= h >> 32;
+    }
+    return static_cast<std::size_t>(h);
+  }
+
+  void grow()
+  {
+    std::vector<std::uint32_t>().swap(m_slots);
+    m_slots.assign(std::max<std::size_t>(1024, 4 * m_soup.points.size()), empty);
+    for(std::uint32_t k = 0; k < m_soup.points.size(); ++k)
+    {
+      std::size_t s = hash(m_soup.points[k]) & (m_slots.size() - 1);
+      while(m_slots[s] != empty)
+        s = (s + 1) & (m_slots.size() - 1);
+      m_slots[s] = k;
+    }
+  }
+
+  Polygon_soup& m_soup;
+  std::vector<std::uint32_t> m_slots;
+};
+
+inline std::string stl_vertex_check(const std::array<double, 3>& p, std::uint64_t triangle, Read_error& e)
+{
+  for(double x : p)
+    if(!std::isfinite(x))
+    {
+      e.non_finite = true;
+      return "triangle " + std::to_string(triangle) + " has a non-finite vertex coordinate (" +
+             (std::isnan(x) ? "nan" : "inf") + ")";
+    }
+  return std::string();
+}
+
+inline Read_error read_binary_stl(Input_file& file, Polygon_soup& soup, std::uint64_t triangles)
+{
+  Stream in(file);
+  Read_error e;
+  char header[84];
+  in.read_bytes(header, 84);
+  Stl_vertices vertices(soup, std::size_t(triangles / 2 + 3));
+  soup.face_end.reserve(triangles);
+  soup.corners.reserve(3 * triangles);
+  const bool swap = !host_is_little_endian();
+  char record[50];
+  for(std::uint64_t t = 0; t < triangles; ++t)
+  {
+    if(!in.read_bytes(record, 50))
+    {
+      e.message = in.error();
+      return e;
+    }
+    for(int c = 0; c < 3; ++c)
+    {
+      std::array<double, 3> p;
+      for(int k = 0; k < 3; ++k)
+        p[std::size_t(k)] = ply_decode(Ply_type::float32, reinterpret_cast<const unsigned char*>(record) + 12 + 12 * c + 4 * k, swap);
+      if(!(e.message = stl_vertex_check(p, t, e)).empty())
+        return e;
+      std::uint32_t i = 0;
+      if(!vertices.index(p, i))
+      {
+        e.message = "the file has more than 2^32 - 2 vertices";
+        return e;
+      }
+      soup.corners.push_back(i);
+    }
+    end_face(soup);
+  }
+  return e;
+}
+
+inline Read_error read_ascii_stl(Input_file& file, Polygon_soup& soup)
+{
+  Stream in(file);
+  Read_error e;
+  auto fail = [&](const std::string& m) {
+    e.message = in.error().empty() ? at_line(in.line_number()) + m : in.error();
+    return e;
+  };
+  Stl_vertices vertices(soup, std::size_t(std::min<std::uint64_t>(file.size() / 200, std::uint64_t(1) << 24)));
+  // the expected keyword sequence, by state
+  enum State { solid, facet_or_end, outer, vertex, endloop, endfacet, done };
+  State state = solid;
+  int corners = 0;
+  std::uint64_t triangle = 0;
+  std::string_view line;
+  while(in.next_line(line))
+  {
+    std::string_view rest = line;
+    const std::string_view tag = next_word(rest);
+    if(tag.empty())
+      continue;
+    if(state == done)
+    {
+      if(tag == "solid")  // several solids in one file
+      {
+        state = facet_or_end;
+        continue;
+      }
+      return fail("unexpected '" + shown(tag) + "' after 'endsolid'");
+    }
+    if(state == solid)
+    {
+      if(tag != "solid")
+        return fail("an ASCII STL file starts with 'solid'");
+      state = facet_or_end;
+    }
+    else if(state == facet_or_end && tag == "endsolid")
+      state = done;
+    else if(state == facet_or_end && tag == "facet")
+      state = outer;
+    else if(state == outer && tag == "outer" && next_word(rest) == "loop")
+      state = vertex;
+    else if(state == vertex && tag == "vertex")
+    {
+      std::array<double, 3> p;
+      for(int k = 0; k < 3; ++k)
+      {
+        bool non_finite = false;
+        const std::string m = parse_double(next_word(rest), p[std::size_t(k)], non_finite);
+        if(!m.empty())
+        {
+          e.non_finite = non_finite;
+          return fail("triangle " + std::to_string(triangle) + ": " + m);
+        }
+      }
+      if(!next_word(rest).empty())
+        return fail("a 'vertex' line has more than three coordinates");
+      std::uint32_t i = 0;
+      if(!vertices.index(p, i))
+        return fail("more than 2^32 - 2 vertices");
+      soup.corners.push_back(i);
+      if(++corners == 3)
+        state = endloop;
+    }
+    else if(state == endloop && tag == "endloop")
+      state = endfacet;
+    else if(state == endfacet && tag == "endfacet")
+    {
+      if(!end_face(soup))
+        return fail("more than 2^32 - 2 face corners");
+      state = facet_or_end;
+      corners = 0;
+      ++triangle;
+    }
+    else
+    {
+      const char* expected[] = {"solid", "facet or endsolid", "outer loop", "vertex", "endloop", "endfacet", ""};
+      return fail("'" + shown(tag) + "' where '" + expected[state] + "' was expected (facet " + std::to_string(triangle) +
+                  ")");
+    }
+  }
+  if(!in.error().empty())
+    return fail(in.error());
+  if(state != done)
+  {
+    e.message = "the file ends inside facet " + std::to_string(triangle) + " (truncated: no 'endsolid')";
+    return e;
+  }
+  return e;
+}
+
+} // namespace reader_internal
+
+/// reads the polygon soup of the regular file `path` in the format of `extension` ("off",
+/// "obj", "ply" or "stl", lowercase). On failure the message names the problem (the caller
+/// names the file).
+inline Read_error read_polygon_soup(const std::string& path, const std::string& extension, Polygon_soup& soup)
+{
+  using namespace reader_internal;
+  Read_error e;
+  Input_file file;
+  e.message = file.open(path);
+  if(e.failed())
+    return e;
+  if(file.size() == 0)
+  {
+    e.message = "the file is empty";
+    return e;
+  }
+  if(extension == "off")
+    return read_off(file, soup);
+  if(extension == "obj")
+    return read_obj(file, soup);
+  if(extension == "ply")
+    return read_ply(file, soup);
+  if(extension == "stl")
+  {
+    // binary when the size matches the triangle count of bytes 80 to 83; ASCII when it starts
+    // with "solid" (a binary header may start with "solid" too, so the size decides)
+    unsigned char start[84] = {};
+    long got = 0;
+    for(long r = 1; got < 84 && r > 0; got += r)
+      if((r = file.read(reinterpret_cast<char*>(start) + got, std::size_t(84 - got))) < 0)
+      {
+        e.message = std::string("cannot read: ") + std::strerror(errno);
+        return e;
+      }
+    if(!file.rewind())
+    {
+      e.message = std::string("cannot read: ") + std::strerror(errno);
+      return e;
+    }
+    if(got == 84)
+    {
+      const std::uint64_t triangles = std::uint64_t(start[80]) | std::uint64_t(start[81]) << 8 |
+                                      std::uint64_t(start[82]) << 16 | std::uint64_t(start[83]) << 24;
+      if(file.size() == 84 + 50 * triangles)
+        return read_binary_stl(file, soup, triangles);
+      if(std::memcmp(start, "solid", 5) != 0)
+      {
+        e.message = "a binary STL file of " + std::to_string(triangles) + " triangles has " +
+                    std::to_string(84 + 50 * triangles) + " bytes, but this one has " + std::to_string(file.size()) +
+                    " (truncated or corrupt; an ASCII STL file starts with 'solid')";
+        return e;
+      }
+    }
+    else if(got < 5 || std::memcmp(start, "solid", 5) != 0)
+    {
+      e.message = "the file is too short for a binary STL file (" + std::to_string(file.size()) +
+                  " bytes) and does not start with 'solid' (ASCII STL)";
+      return e;
+    }
+    return read_ascii_stl(file, soup);
+  }
+  e.message = "unsupported file extension '." + extension + "' (expected .off, .obj, .ply or .stl)";
+  return e;
+}
+
+} // namespace mbp_cli
+
+#endif // MBP_CLI_MESH_READER_H
