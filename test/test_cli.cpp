@@ -28,12 +28,14 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -41,6 +43,9 @@
 #include <vector>
 
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -59,6 +64,7 @@ struct Run
 {
   bool exited = false;  // false: killed by a signal (a crash)
   int code = -1;        // exit status
+  int signal = 0;       // the signal that ended it (run_stopped)
   std::string out, err;
 };
 
@@ -102,6 +108,20 @@ struct Scratch
 
   Run run(const std::vector<std::string>& args, const std::string& program = MBP_CLI_PROGRAM) const
   {
+    return run_with(args, program, nullptr);
+  }
+
+  // Runs the program with MBP_CLI_TEST_STOP_BEFORE_PUBLISH set: it stops itself (SIGSTOP)
+  // when every output is written to its temporary file, before any is published; then
+  // `when_stopped(pid)` runs (it must continue or kill the program).
+  Run run_stopped(const std::vector<std::string>& args, const std::function<void(pid_t)>& when_stopped) const
+  {
+    return run_with(args, MBP_CLI_PROGRAM, &when_stopped);
+  }
+
+  Run run_with(const std::vector<std::string>& args, const std::string& program,
+               const std::function<void(pid_t)>* when_stopped) const
+  {
     const std::string out = (root / "stdout.txt").string(), err = (root / "stderr.txt").string();
     const std::string cwd = work.string();
     std::vector<std::string> argv_strings{program};
@@ -119,19 +139,34 @@ struct Scratch
       const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       if(o < 0 || e < 0 || ::chdir(cwd.c_str()) != 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0)
         ::_exit(126);
+      if(when_stopped != nullptr)
+        ::setenv("MBP_CLI_TEST_STOP_BEFORE_PUBLISH", "1", 1);
+      ::alarm(600);  // a program that blocks (a FIFO) is killed instead of hanging the test
       ::execv(argv[0], argv.data());
       ::_exit(127);
     }
     int status = 0;
-    BOOST_REQUIRE(::waitpid(pid, &status, 0) == pid);
+    if(when_stopped != nullptr)
+    {
+      BOOST_REQUIRE(::waitpid(pid, &status, WUNTRACED) == pid);
+      if(WIFSTOPPED(status))
+      {
+        (*when_stopped)(pid);
+        BOOST_REQUIRE(::waitpid(pid, &status, 0) == pid);
+      }
+    }
+    else
+      BOOST_REQUIRE(::waitpid(pid, &status, 0) == pid);
     Run r;
+    r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
     r.exited = WIFEXITED(status);
     r.code = r.exited ? WEXITSTATUS(status) : -1;
     r.out = read_text(out);
     r.err = read_text(err);
     BOOST_TEST_MESSAGE("ran " << program << " ... -> " << (r.exited ? "exit " + std::to_string(r.code) : "signal")
                        << "\nstderr: " << r.err);
-    BOOST_REQUIRE_MESSAGE(r.exited, "the program was killed by signal " << WTERMSIG(status) << "\n" << r.err);
+    BOOST_REQUIRE_MESSAGE(r.exited || when_stopped != nullptr,
+                          "the program was killed by signal " << WTERMSIG(status) << "\n" << r.err);
     BOOST_REQUIRE_MESSAGE(r.code != 126 && r.code != 127, "could not start " << program);
     return r;
   }
@@ -1079,20 +1114,22 @@ std::vector<Bad_case> bad_cases()
     {"face index out of range (OBJ)", {{"far.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"}}, with({"far.obj"}), 1,
      {"face 0 uses vertex index 4 (1-based)", "3 vertices"}},
     {"negative face index out of range (OBJ)", {{"neg.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n"}},
-     with({"neg.obj"}), 1, {"not a valid .obj"}},  // CGAL's OBJ reader rejects it
+     with({"neg.obj"}), 1, {"line 4", "relative vertex index -4 refers to before the first vertex"}},
     {"face index out of range (PLY)", {{"far.ply", ply_header(1, "uchar") + "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"}},
      with({"far.ply"}), 1, {"face 0 uses vertex index 7 (0-based)"}},
     {"PLY list longer than the file", {{"long.ply", ply_header(1, "uint") + "0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n"}},
      with({"long.ply"}), 1, {"a list of 4000000000 entries", "corrupt"}},
     {"OFF header count larger than the file", {{"huge.off", "OFF\n1000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"}},
-     with({"huge.off"}), 1, {"announces vertices: 1000000000", "more than a file of"}},
-    {"OFF face size larger than the file, mid-line", {{"mid.off", "OFF\n 00\n3 0 66666666666 0 0 0\n3 0 1 2\n"}},
-     with({"mid.off"}), 1, {"cannot read it", "corrupt"}},
+     with({"huge.off"}), 1, {"announces 1000000000 vertices and 1 faces", "more than the", "bytes after it can hold"}},
+    {"OFF counts spread over lines", {{"mid.off", "OFF\n 00\n3 0 66666666666 0 0 0\n3 0 1 2\n"}},
+     with({"mid.off"}), 1, {"cannot read it", "line 2", "the OFF counts line '00' has 1 number"}},
+    {"OFF face size larger than its line", {{"size.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n66666666666 0 1 2\n"}},
+     with({"size.off"}), 1, {"line 6", "face 0 announces 66666666666 vertices, more than its line holds"}},
     {"OFF keyword with trailing characters", {{"coff.off", "COFF-\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"}},
      with({"coff.off"}), 1, {"OFF keyword", "COFF-"}},
     {"PLY list count with trailing characters",
      {{"suffix.ply", ply_header(1, "uint") + "0 0 0\n1 0 0\n0 1 0\n4000000000x 0 1 2\n"}}, with({"suffix.ply"}), 1,
-     {"a list of 4000000000 entries"}},
+     {"line 13", "'4000000000x' is not an integer"}},
     {"handle", {{"torus.off", off_text(mbp_test::punctured_torus())}}, with({"torus.off"}), 1, {"not a topological disc"}},
     {"unknown option", {{"grid.off", grid}}, with({"grid.off", "--frobnicate"}), 2, {"unknown option", "--frobnicate"}},
     {"unknown center", {{"grid.off", grid}}, with({"grid.off", "--center=middle"}), 2, {"--center", "middle"}},
@@ -1180,4 +1217,424 @@ BOOST_AUTO_TEST_CASE(bad_input_fails_cleanly)
       BOOST_TEST((left == inputs), "files in the working directory:" << listing);
     }
   }
+}
+
+// ---------------------------------------------------------------- files: inputs and outputs
+// (issue 14: every case below failed before the streaming readers and file_output.h)
+
+namespace {
+
+std::string text_of(const fs::path& path) { return Scratch::read_text(path); }
+
+// the temporary files of the program (file_output.h: ".mbp-PID-K.tmp", ".mbp-PID-K.old")
+std::size_t temporaries_in(const fs::path& directory)
+{
+  std::size_t n = 0;
+  for(const auto& entry : fs::directory_iterator(directory))
+  {
+    const std::string name = entry.path().filename().string();
+    n += (name.rfind(".mbp-", 0) == 0 || name.find(".tmp") != std::string::npos) ? 1 : 0;
+  }
+  return n;
+}
+
+mode_t file_type(const fs::path& path)
+{
+  struct stat st;
+  BOOST_REQUIRE(::lstat(path.c_str(), &st) == 0);
+  return st.st_mode & S_IFMT;
+}
+
+// the shortest text that reads back as `x` exactly
+std::string exact_text(double x)
+{
+  char buffer[32];
+  return std::string(buffer, std::to_chars(buffer, buffer + sizeof(buffer), x).ptr);
+}
+
+std::string exact_off_text(const mbp_test::Soup& soup)
+{
+  std::string s = "OFF\n" + std::to_string(soup.points.size()) + " " + std::to_string(soup.faces.size()) + " 0\n";
+  for(const auto& p : soup.points)
+    s += exact_text(p[0]) + " " + exact_text(p[1]) + " " + exact_text(p[2]) + "\n";
+  for(const auto& f : soup.faces)
+  {
+    s += std::to_string(f.size());
+    for(std::size_t i : f)
+      s += " " + std::to_string(i);
+    s += "\n";
+  }
+  return s;
+}
+
+// a value in the byte order of a binary PLY file
+template <class T>
+void put_binary(std::string& s, T value, bool big_endian)
+{
+  char b[sizeof(T)];
+  std::memcpy(b, &value, sizeof(T));
+  const std::uint16_t one = 1;
+  const bool host_little = *reinterpret_cast<const unsigned char*>(&one) == 1;
+  if(big_endian == host_little)
+    std::reverse(b, b + sizeof(T));
+  s.append(b, sizeof(T));
+}
+
+// a binary PLY of `soup`: double coordinates, an extra float property per vertex, uchar/uint lists
+std::string binary_ply(const mbp_test::Soup& soup, bool big_endian)
+{
+  std::string s = std::string("ply\nformat ") + (big_endian ? "binary_big_endian" : "binary_little_endian") +
+                  " 1.0\ncomment written by test_cli\nelement vertex " + std::to_string(soup.points.size()) +
+                  "\nproperty double x\nproperty double y\nproperty double z\nproperty float quality\nelement face " +
+                  std::to_string(soup.faces.size()) + "\nproperty list uchar uint vertex_indices\nend_header\n";
+  for(const auto& p : soup.points)
+  {
+    for(double c : p)
+      put_binary(s, c, big_endian);
+    put_binary(s, 0.5f, big_endian);
+  }
+  for(const auto& f : soup.faces)
+  {
+    s += char(f.size());
+    for(std::size_t i : f)
+      put_binary(s, std::uint32_t(i), big_endian);
+  }
+  return s;
+}
+
+// a binary STL of `soup` (float coordinates, little-endian)
+std::string binary_stl(const mbp_test::Soup& soup)
+{
+  std::string s(80, ' ');
+  s.replace(0, 5, "solid");  // a binary header may start with "solid": the size decides
+  put_binary(s, std::uint32_t(soup.faces.size()), false);
+  for(const auto& f : soup.faces)
+  {
+    for(int k = 0; k < 3; ++k)
+      put_binary(s, 0.f, false);
+    for(std::size_t i : f)
+      for(double c : soup.points[i])
+        put_binary(s, float(c), false);
+    s += std::string(2, '\0');
+  }
+  return s;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(reads_binary_ply_and_stl)
+{
+  // the binary readers give the same mesh as the OFF: the same vertices in the same order,
+  // hence the same OBJ (binary PLY of doubles); STL (floats, vertices merged by position) gives
+  // the float-rounded vertices
+  const mbp_test::Soup soup = mbp_test::bumpy_disk();
+  Scratch scratch;
+  scratch.write("disk.off", exact_off_text(soup));
+  scratch.write("little.ply", binary_ply(soup, false));
+  scratch.write("big.ply", binary_ply(soup, true));
+  scratch.write("disk.stl", binary_stl(soup));
+  BOOST_REQUIRE_EQUAL(scratch.run({"disk.off", "off.obj"}).code, 0);
+  const std::string reference = text_of(scratch.work / "off.obj");
+  auto body = [](const std::string& obj) { return obj.substr(obj.find("\nv ")); };  // without the comments
+  for(const std::string name : {"little.ply", "big.ply"})
+    BOOST_TEST_CONTEXT(name)
+    {
+      const Run r = scratch.run({name, name + ".obj"});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      BOOST_TEST(body(text_of(scratch.work / (name + ".obj"))) == body(reference));
+    }
+  const Run r = scratch.run({"disk.stl", "stl.obj", "--json"});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  const Obj obj = read_obj(scratch.work / "stl.obj");
+  BOOST_TEST(obj.v.size() == soup.points.size());
+  BOOST_TEST(obj.f.size() == soup.faces.size());
+  // vertices in order of first appearance, float-rounded
+  std::vector<std::size_t> first;
+  std::vector<bool> seen(soup.points.size(), false);
+  for(const auto& f : soup.faces)
+    for(std::size_t i : f)
+      if(!seen[i])
+      {
+        seen[i] = true;
+        first.push_back(i);
+      }
+  BOOST_REQUIRE_EQUAL(first.size(), obj.v.size());
+  std::size_t exact = 0;
+  for(std::size_t k = 0; k < first.size(); ++k)
+  {
+    const auto& p = soup.points[first[k]];
+    exact += (obj.v[k][0] == double(float(p[0])) && obj.v[k][1] == double(float(p[1])) &&
+              obj.v[k][2] == double(float(p[2]))) ? 1 : 0;
+  }
+  BOOST_TEST(exact == first.size());
+}
+
+BOOST_AUTO_TEST_CASE(messages_name_the_actual_problem)
+{
+  // each input once gave a message about something else (in parentheses)
+  std::string one_point = grid_off;  // all nine vertices at (1, 1, 1) (was: "the mesh is closed")
+  {
+    const std::size_t begin = one_point.find("0 0 0\n"), end = one_point.find("3 0 1 4");
+    std::string points;
+    for(int i = 0; i < 9; ++i)
+      points += "1 1 1\n";
+    one_point.replace(begin, end - begin, points);
+  }
+  struct Case
+  {
+    std::string name, file, contents;
+    std::vector<std::string> expected, wrong;
+  };
+  const std::vector<Case> cases = {
+    {"all vertices at one point", "point.off", one_point,
+     {"all 9 vertices of its faces coincide (at 1 1 1)", "no extent"}, {"closed", "zero area"}},
+    {"OBJ face index 0 (was: a different index)", "zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n",
+     {"line 4", "face 0: vertex index 0 is invalid in OBJ (indices start at 1"}, {"uses vertex index"}},
+    {"overflowing OBJ index (was: not a 2-manifold)", "overflow.obj",
+     "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999\n",
+     {"line 4", "vertex index 99999999999999999999 is out of range"}, {"manifold"}},
+    {"OBJ index beyond 32 bits", "large.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967299\n",
+     {"vertex index 4294967299 is out of range"}, {"manifold", "uses vertex index 3 "}},
+    {"OFF header with two counts (was: more than the three counts)", "two.off",
+     "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+     {"line 2", "the OFF counts line '3 1' has 2 numbers; it needs exactly three"}, {"more than the three"}},
+    {"face using a vertex twice", "twice.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 0 1\n",
+     {"not a polygon mesh", "face 1 uses vertex 0 twice"}, {}},
+    {"inconsistent orientation", "flip.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 3 2\n",
+     {"not a polygon mesh", "faces 0 and 1 traverse the edge 2-0 in the same direction"}, {}},
+    {"edge of three faces", "fin.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 -1 1\n3 0 1 2\n3 0 2 3\n3 0 2 4\n",
+     {"the edge 0-2 has more than two faces (faces 0, 1 and 2)"}, {}},
+    {"unknown OBJ statement", "text.obj", "v 0 0 0\nhello world\n", {"line 2", "'hello' is not an OBJ statement"}, {}},
+    {"binary STL of the wrong size", "short.stl", std::string(84, '\0') + "xx",
+     {"has 84 bytes, but this one has 86"}, {}},
+    {"PLY without end_header", "open.ply", "ply\nformat ascii 1.0\nelement vertex 0\n", {"no 'end_header'"}, {}},
+    {"coordinate beyond double", "big.obj", "v 0 0 1e400\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+     {"non-finite", "'1e400' is too large for a double"}, {}},
+  };
+  for(const Case& c : cases)
+    BOOST_TEST_CONTEXT(c.name)
+    {
+      Scratch scratch;
+      scratch.write(c.file, c.contents);
+      const Run r = scratch.run({c.file, "out.obj", "--svg=out.svg"});
+      BOOST_TEST(r.code == 1);
+      BOOST_TEST(contains(r.err, "error: " + c.file + ": "), r.err);
+      for(const std::string& m : c.expected)
+        BOOST_TEST(contains(r.err, m), "'" << m << "' not in: " << r.err);
+      for(const std::string& m : c.wrong)
+        BOOST_TEST(!contains(r.err, m), "'" << m << "' in: " << r.err);
+      BOOST_TEST((scratch.files() == std::set<std::string>{c.file}));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(huge_and_tiny_coordinates_are_parameterized)
+{
+  // a conformal map does not depend on the scale: coordinates near 1e300 (squared lengths
+  // overflow) or 1e-300 (they underflow) give the layout of the unscaled mesh (was: "face of
+  // zero area"), and the OBJ keeps the input's coordinates exactly
+  const mbp_test::Soup soup = mbp_test::bumpy_disk();
+  Scratch scratch;
+  scratch.write("unit.off", exact_off_text(soup));
+  BOOST_REQUIRE_EQUAL(scratch.run({"unit.off", "unit.obj"}).code, 0);
+  const Obj reference = read_obj(scratch.work / "unit.obj");
+  for(const double scale : {1e300, 1e-300, 3e160})
+    BOOST_TEST_CONTEXT("scale " << scale)
+    {
+      mbp_test::Soup scaled = soup;
+      for(auto& p : scaled.points)
+        for(double& c : p)
+          c *= scale;
+      scratch.write("scaled.off", exact_off_text(scaled));
+      const Run r = scratch.run({"scaled.off", "scaled.obj", "--json"});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      const Obj obj = read_obj(scratch.work / "scaled.obj");
+      BOOST_REQUIRE_EQUAL(obj.v.size(), scaled.points.size());
+      std::size_t exact = 0;
+      for(std::size_t i = 0; i < obj.v.size(); ++i)
+        exact += (obj.v[i][0] == scaled.points[i][0] && obj.v[i][1] == scaled.points[i][1] &&
+                  obj.v[i][2] == scaled.points[i][2]) ? 1 : 0;
+      BOOST_TEST(exact == obj.v.size());
+      BOOST_REQUIRE_EQUAL(obj.vt.size(), reference.vt.size());
+      double worst = 0.;
+      for(std::size_t i = 0; i < obj.vt.size(); ++i)
+        worst = (std::max)(worst, std::hypot(obj.vt[i][0] - reference.vt[i][0], obj.vt[i][1] - reference.vt[i][1]));
+      BOOST_TEST(worst < 1e-9, "largest UV difference from the unscaled mesh: " << worst);
+      BOOST_TEST(parse_json(r.out).get<std::size_t>("quality.flipped_faces") == 0u);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(output_that_is_an_input_is_refused)
+{
+  // was: the input overwritten by the result (also with --svg=INPUT)
+  const std::string octahedron = "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                                 "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+  const std::vector<std::vector<std::string> > runs = {
+    {"grid.off", "grid.off"}, {"grid.off", "./grid.off"}, {"grid.off", "out.obj", "--svg=grid.off"},
+    {"grid.off", "out.obj", "--svg=sub/../grid.off"}, {"grid.off", "hard.obj"}, {"grid.off", "--output=grid.off"}};
+  for(const auto& args : runs)
+    BOOST_TEST_CONTEXT(args[1] << (args.size() > 2 ? " " + args[2] : std::string()))
+    {
+      Scratch scratch;
+      scratch.write("grid.off", grid_off);
+      fs::create_directory(scratch.work / "sub");
+      fs::create_hard_link(scratch.work / "grid.off", scratch.work / "hard.obj");
+      const Run r = scratch.run(args);
+      BOOST_TEST(r.code == 2);
+      BOOST_TEST(contains(r.err, "is the input 'grid.off' (the same file)"), r.err);
+      BOOST_TEST(text_of(scratch.work / "grid.off") == grid_off);
+      BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off", "hard.obj", "sub"}));
+    }
+  // the seam file is an input too
+  Scratch scratch;
+  scratch.write("octahedron.off", octahedron);
+  scratch.write("s.selection.txt", "\n\n4 0 0 5\n");
+  const Run r = scratch.run({"octahedron.off", "s.selection.txt", "--seams=s.selection.txt"});
+  BOOST_TEST(r.code == 2);
+  BOOST_TEST(contains(r.err, "is the seam file 's.selection.txt'"), r.err);
+  BOOST_TEST(text_of(scratch.work / "s.selection.txt") == "\n\n4 0 0 5\n");
+  // two outputs that are one file through different names
+  Scratch same;
+  same.write("grid.off", grid_off);
+  const Run s = same.run({"grid.off", "out.obj", "--svg=./out.obj"});
+  BOOST_TEST(s.code == 2);
+  BOOST_TEST(contains(s.err, "name the same file"), s.err);
+  BOOST_TEST((same.files() == std::set<std::string>{"grid.off"}));
+}
+
+BOOST_AUTO_TEST_CASE(non_regular_output_targets_are_refused)
+{
+  // was: a FIFO, a device node or a symbolic link replaced by a regular file
+  Scratch scratch;
+  scratch.write("grid.off", grid_off);
+  scratch.write("real.obj", "previous\n");
+  BOOST_REQUIRE(::mkfifo((scratch.work / "fifo.obj").c_str(), 0644) == 0);
+  fs::create_symlink("real.obj", scratch.work / "link.obj");
+  fs::create_symlink("nowhere/missing.obj", scratch.work / "dangling.obj");
+  const bool device = ::mknod((scratch.work / "null.obj").c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0;
+  struct Case { std::vector<std::string> args; std::string message, target; mode_t type; };
+  std::vector<Case> cases = {
+    {{"grid.off", "fifo.obj"}, "it is a FIFO (named pipe), not a regular file", "fifo.obj", S_IFIFO},
+    {{"grid.off", "out.obj", "--svg=fifo.obj"}, "it is a FIFO (named pipe), not a regular file", "fifo.obj", S_IFIFO},
+    {{"grid.off", "link.obj"}, "it is a symbolic link; the program does not replace a link", "link.obj", S_IFLNK},
+    {{"grid.off", "out.obj", "--svg=link.obj"}, "it is a symbolic link", "link.obj", S_IFLNK},
+    {{"grid.off", "dangling.obj"}, "it is a symbolic link", "dangling.obj", S_IFLNK},
+  };
+  if(device)
+    cases.push_back({{"grid.off", "null.obj"}, "it is a character device, not a regular file", "null.obj", S_IFCHR});
+  else
+    BOOST_TEST_MESSAGE("no device node case: mknod is not permitted here");
+  const std::set<std::string> before = scratch.files();
+  for(const Case& c : cases)
+    BOOST_TEST_CONTEXT(c.args.back())
+    {
+      const Run r = scratch.run(c.args);
+      BOOST_TEST(r.code == 1);
+      BOOST_TEST(contains(r.err, "cannot write"), r.err);
+      BOOST_TEST(contains(r.err, c.message), r.err);
+      BOOST_TEST(file_type(scratch.work / c.target) == c.type);
+      BOOST_TEST(text_of(scratch.work / "real.obj") == "previous\n");
+      BOOST_TEST(scratch.files() == before);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(non_regular_inputs_are_refused)
+{
+  // was: a FIFO blocked forever; a link to /dev/zero grew memory until std::bad_alloc
+  Scratch scratch;
+  scratch.write("octahedron.off", "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                                  "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n");
+  BOOST_REQUIRE(::mkfifo((scratch.work / "fifo.off").c_str(), 0644) == 0);
+  BOOST_REQUIRE(::mkfifo((scratch.work / "fifo.selection.txt").c_str(), 0644) == 0);
+  fs::create_symlink("/dev/zero", scratch.work / "zero.obj");
+  fs::create_symlink("/dev/urandom", scratch.work / "random.off");
+  const std::set<std::string> before = scratch.files();
+  const std::vector<std::pair<std::vector<std::string>, std::string> > cases = {
+    {{"fifo.off", "out.obj"}, "it is a FIFO (named pipe), not a regular file"},
+    {{"zero.obj", "out.obj"}, "it is a character device, not a regular file"},
+    {{"random.off", "out.obj"}, "it is a character device, not a regular file"},
+    {{"octahedron.off", "out.obj", "--seams=fifo.selection.txt"}, "it is a FIFO (named pipe)"}};
+  for(const auto& c : cases)
+    BOOST_TEST_CONTEXT(c.first[0] << " " << c.first.back())
+    {
+      const Run r = scratch.run(c.first);
+      BOOST_TEST(r.code == 1);
+      BOOST_TEST(contains(r.err, c.second), r.err);
+      BOOST_TEST(scratch.files() == before);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(failed_publish_keeps_previous_outputs)
+{
+  // the SVG cannot be published (its directory was moved away while the program ran): the
+  // OBJ already renamed gets its previous contents back (was: the user's OBJ deleted)
+  Scratch scratch;
+  scratch.write("grid.off", grid_off);
+  scratch.write("out.obj", "previous obj\n");
+  fs::create_directory(scratch.work / "pictures");
+  scratch.write("pictures/out.svg", "previous svg\n");
+  const Run r = scratch.run_stopped({"grid.off", "out.obj", "--svg=pictures/out.svg"}, [&](pid_t pid) {
+    BOOST_TEST(temporaries_in(scratch.work) == 1u);  // the OBJ's; the SVG's is in pictures/
+    fs::rename(scratch.work / "pictures", scratch.work / "moved");
+    ::kill(pid, SIGCONT);
+  });
+  BOOST_TEST(r.exited);
+  BOOST_TEST(r.code == 1);
+  BOOST_TEST(contains(r.err, "cannot write --svg 'pictures/out.svg'"), r.err);
+  BOOST_TEST(text_of(scratch.work / "out.obj") == "previous obj\n");
+  BOOST_TEST(text_of(scratch.work / "moved/out.svg") == "previous svg\n");
+  BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off", "out.obj", "moved"}));
+
+  // a new OBJ (none before) is removed again
+  Scratch fresh;
+  fresh.write("grid.off", grid_off);
+  fs::create_directory(fresh.work / "pictures");
+  const Run n = fresh.run_stopped({"grid.off", "new.obj", "--svg=pictures/out.svg"}, [&](pid_t pid) {
+    fs::rename(fresh.work / "pictures", fresh.work / "moved");
+    ::kill(pid, SIGCONT);
+  });
+  BOOST_TEST(n.code == 1);
+  BOOST_TEST((fresh.files() == std::set<std::string>{"grid.off", "moved"}));
+
+  // the same run not interrupted publishes both
+  const Run ok = scratch.run_stopped({"grid.off", "out.obj", "--svg=moved/out.svg"}, [](pid_t pid) { ::kill(pid, SIGCONT); });
+  BOOST_TEST(ok.code == 0);
+  BOOST_TEST(read_obj(scratch.work / "out.obj").f.size() == 8u);
+  BOOST_TEST(contains(text_of(scratch.work / "moved/out.svg"), "</svg>"));
+  BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off", "out.obj", "moved"}));
+}
+
+BOOST_AUTO_TEST_CASE(interrupted_run_leaves_no_temporary_file)
+{
+  // killed with every output in its temporary file: the temporaries are removed, the previous
+  // outputs are left as they were (was: a hidden partial temporary file left behind)
+  for(const int sig : {SIGTERM, SIGINT, SIGHUP})
+    BOOST_TEST_CONTEXT("signal " << sig)
+    {
+      Scratch scratch;
+      scratch.write("grid.off", grid_off);
+      scratch.write("out.obj", "previous\n");
+      const Run r = scratch.run_stopped({"grid.off", "out.obj", "--svg=out.svg"}, [&](pid_t pid) {
+        BOOST_TEST(temporaries_in(scratch.work) == 2u);
+        ::kill(pid, sig);
+        ::kill(pid, SIGCONT);
+      });
+      BOOST_TEST(!r.exited);
+      BOOST_TEST(r.signal == sig);
+      BOOST_TEST(temporaries_in(scratch.work) == 0u);
+      BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off", "out.obj"}));
+      BOOST_TEST(text_of(scratch.work / "out.obj") == "previous\n");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(long_output_names)
+{
+  // names of 250 bytes are legal (NAME_MAX 255) (was: "File name too long", the temporary
+  // name being longer than the target's)
+  const std::string obj = std::string(246, 'o') + ".obj", svg = std::string(246, 's') + ".svg";
+  Scratch scratch;
+  scratch.write("grid.off", grid_off);
+  const Run r = scratch.run({"grid.off", obj, "--svg=" + svg});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off", obj, svg}));
+  BOOST_TEST(read_obj(scratch.work / obj).f.size() == 8u);
 }

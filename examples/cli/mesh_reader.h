@@ -351,7 +351,7 @@ inline std::string check_indices(const Polygon_soup& soup, int base)
   for(std::size_t f = 0, k = 0; f < soup.face_end.size(); ++f)
     for(; k < soup.face_end[f]; ++k)
       if(soup.corners[k] >= n)
-        return "face " + std::to_string(f) + " uses vertex index " + std::to_string(std::uint64_t(soup.corners[k]) + base) +
+        return "face " + std::to_string(f) + " uses vertex index " + std::to_string(std::uint64_t(soup.corners[k]) + std::uint64_t(base)) +
                (base == 1 ? " (1-based)" : " (0-based)") + ", but the file has " + std::to_string(n) + " vertices";
   return std::string();
 }

@@ -9,14 +9,15 @@
 
 // libFuzzer target over the input path of the command-line program
 // (examples/measured_parameterization.cpp): the bytes are a mesh file, read and checked by the
-// program's own helpers (examples/cli/mesh_input.h), then, when the mesh is valid and small,
+// program's own helpers (the streaming readers of examples/cli/mesh_reader.h through
+// read_mesh() of examples/cli/mesh_input.h), then, when the mesh is valid and small,
 // parameterized by Measured_conformal_parameterizer_3 with the program's defaults (Poisson
 // center, Poisson border distances, repair on).
 //
 // The format is chosen from the content, as a user's file would be named: "OFF" in the first
 // bytes -> .off, "ply" -> .ply, "solid" or a binary STL whose size matches its triangle count
 // -> .stl, anything else -> .obj. The bytes are written to a temporary file of that extension
-// (the program reads files by path, with a second reading to explain a failure).
+// (the program reads regular files by path).
 //
 // Invariants (a violation aborts, which libFuzzer reports as a crash):
 //  - reading and the checks never crash, leak or hit undefined behaviour (ASan, UBSan);
