@@ -12,7 +12,10 @@
 // command line with the same number of cones.
 //
 //   seam_comparison [--meshes=DIR] [--bff=PROGRAM] [--only=NAME] [--sweep] [--work=DIR]
+//                   [--border=conformal|automatic]
 //
+// The cut mesh is flattened by Measured_conformal_parameterizer_3 with the conformal border
+// (BFF's border with scale factor 0 on the border; default) or the automatic border.
 // Meshes: the rows of DIR/PROVENANCE.md (default: ../shared/data/meshes, as configured) of the
 // classes CLOSED, HOLES, OPEN g>0 (flattened) and MESSY (they must get a named error).
 // --sweep: instead, on the closed meshes of genus 0, the figures for 2 to 16 cones (the
@@ -150,7 +153,7 @@ double total_area(const Mesh& mesh)
 
 // ---------------------------------------------------------------- ours
 
-Figures run_ours(Mesh& mesh, const SMP::Disk_seams_options& options)
+Figures run_ours(Mesh& mesh, const SMP::Disk_seams_options& options, Parameterizer::Border_choice border)
 {
   Figures f;
   const Clock::time_point start = Clock::now();
@@ -174,7 +177,7 @@ Figures run_ours(Mesh& mesh, const SMP::Disk_seams_options& options)
     const auto bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
     auto uv = get(CGAL::dynamic_vertex_property_t<K::Point_2>(), sm);
     Parameterizer parameterizer;
-    parameterizer.set_border_choice(Parameterizer::AUTOMATIC_BORDER);
+    parameterizer.set_border_choice(border);
     const SMP::Error_code s = SMP::parameterize(sm, parameterizer, bhd, uv);
     f.seconds = seconds_since(start);
     if(s != SMP::OK)
@@ -395,6 +398,7 @@ struct Arguments
   std::string meshes = MBP_MESH_DIR, bff = MBP_BFF_PROGRAM, only;
   fs::path work = fs::temp_directory_path() / "mbp_seam_comparison";
   bool sweep = false;
+  Parameterizer::Border_choice border = Parameterizer::CONFORMAL_BORDER;
 };
 
 int comparison(const Arguments& args)
@@ -424,7 +428,7 @@ int comparison(const Arguments& args)
     }
     for(const auto& variant : variants)
     {
-      const Figures ours = run_ours(mesh, variant.second);
+      const Figures ours = run_ours(mesh, variant.second, args.border);
       std::cout << "| " << e.name << (variant.first.empty() ? "" : " (" + variant.first + ")") << " | "
                 << e.mesh_class << " | " << num_vertices(mesh) << " | " << cells(ours) << " | ";
       Figures bff;
@@ -477,7 +481,7 @@ int sweep(const Arguments& args)
     {
       SMP::Disk_seams_options options;
       options.number_of_cones = cones;
-      const Figures ours = run_ours(mesh, options);
+      const Figures ours = run_ours(mesh, options, args.border);
       std::cout << "| " << e.name << " | " << cones << " | " << number(ours.seam_length) << " | " << number(ours.angle)
                 << " | " << number(ours.area) << " | " << ours.flips << (ours.overlap ? " / yes" : " / no") << " | ";
       if(with_bff && cones >= 3)
@@ -511,9 +515,14 @@ int main(int argc, char** argv)
       args.only = value("--only=");
     else if(!value("--work=").empty())
       args.work = value("--work=");
+    else if(a == "--border=automatic")
+      args.border = Parameterizer::AUTOMATIC_BORDER;
+    else if(a == "--border=conformal")
+      args.border = Parameterizer::CONFORMAL_BORDER;
     else
     {
-      std::cerr << "usage: seam_comparison [--meshes=DIR] [--bff=PROGRAM] [--only=NAME] [--sweep] [--work=DIR]\n";
+      std::cerr << "usage: seam_comparison [--meshes=DIR] [--bff=PROGRAM] [--only=NAME] [--sweep] [--work=DIR]"
+                   " [--border=conformal|automatic]\n";
       return EXIT_FAILURE;
     }
   }

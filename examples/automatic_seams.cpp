@@ -10,7 +10,8 @@
 // Parameterizing a closed surface without a seam file: compute_disk_seams() cuts the mesh
 // into a topological disk (through a few cone vertices on a surface of genus 0, along 2g
 // loops on a surface of genus g, joining the holes of a surface with border), CGAL::Seam_mesh
-// cuts it open along those seams, and the measured conformal parameterizer flattens it.
+// cuts it open along those seams, and Measured_conformal_parameterizer_3 flattens it with the
+// conformal border (Boundary First Flattening's border with scale factor 0 along the cut).
 //
 //   automatic_seams [INPUT] [OUTPUT.obj] [CONES]
 //
@@ -141,7 +142,7 @@ int main(int argc, char** argv)
   // 3. The flattening of the disk.
   auto uvmap = get(CGAL::dynamic_vertex_property_t<Point_2>(), seam_mesh);
   Parameterizer parameterizer;
-  parameterizer.set_border_choice(Parameterizer::AUTOMATIC_BORDER);
+  parameterizer.set_border_choice(Parameterizer::CONFORMAL_BORDER);
   const SMP::Error_code status = SMP::parameterize(seam_mesh, parameterizer, bhd, uvmap);
   if(status != SMP::OK)
   {

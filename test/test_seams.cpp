@@ -329,7 +329,7 @@ SMP::Parameterization_quality flatten_and_check(const Mesh& mesh, const Seams& s
   auto uv = get(CGAL::dynamic_vertex_property_t<K::Point_2>(), sm);
   typedef SMP::Measured_conformal_parameterizer_3<Seam_mesh> Parameterizer;
   Parameterizer parameterizer;
-  parameterizer.set_border_choice(Parameterizer::AUTOMATIC_BORDER);
+  parameterizer.set_border_choice(Parameterizer::CONFORMAL_BORDER);
   const SMP::Error_code status = SMP::parameterize(sm, parameterizer, bhd, uv);
   BOOST_REQUIRE_MESSAGE(status == SMP::OK, SMP::get_measured_error_message(status));
   const SMP::Parameterization_quality q = SMP::measure_quality(sm, faces(sm), uv);
@@ -672,6 +672,7 @@ BOOST_AUTO_TEST_CASE(project_meshes_are_cut_into_disks, MBP_EXTENDED_TIER)
     const Seams s = compute(mesh);
     check_disk(mesh, s);
     const SMP::Parameterization_quality q = flatten_and_check(mesh, s);
+    BOOST_CHECK_LE(q.angle_distortion, 0.05);  // the target of issue 16
     BOOST_TEST_MESSAGE(name << ": " << s.report.number_of_seam_edges << " seam edges, " << s.report.cones.size()
                             << " cones, angle distortion " << q.angle_distortion);
   }
