@@ -191,7 +191,11 @@ inline std::string shown(std::string_view s)
 class Stream
 {
 public:
-  explicit Stream(Input_file& file) : m_file(file), m_buffer(Input_file::block_size) { }
+  // a block, or less for a small file (the buffer grows when a line fills it)
+  explicit Stream(Input_file& file)
+    : m_file(file),
+      m_buffer(static_cast<std::size_t>(std::min<std::uint64_t>(Input_file::block_size, file.size() + 64)))
+  { }
 
   const std::string& error() const { return m_error; }
   std::size_t line_number() const { return m_line; }
@@ -273,7 +277,7 @@ private:
       m_begin = 0;
       m_end = kept;
     }
-    if(m_buffer.size() - m_end < Input_file::block_size / 2)
+    if(m_end == m_buffer.size())  // a line as long as the buffer
       m_buffer.resize(m_buffer.size() * 2);
     const long r = m_file.read(m_buffer.data() + m_end, m_buffer.size() - m_end);
     if(r < 0)
