@@ -284,7 +284,7 @@ Failure check_mesh(const Mesh& mesh)
     std::size_t used = 0;
     for(auto v : vertices(mesh))
     {
-      if(CGAL::internal::is_isolated(v, mesh))
+      if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge())  // in no face
         continue;
       ++used;
       if(first)
