@@ -7,8 +7,9 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// Seams for CGAL::Seam_mesh: reading and checking a CGAL selection file (*.selection.txt),
-// and the topology of a mesh cut along its seams, for messages that say what is wrong.
+// Seams for CGAL::Seam_mesh: reading, checking and writing a CGAL selection file
+// (*.selection.txt), and the topology of a mesh cut along its seams, for messages that say
+// what is wrong.
 // Shared by the programs measured_parameterization and seam_parameterization.
 //
 // A selection file has three lines: the selected vertices, the selected faces and the
@@ -169,6 +170,31 @@ std::string read_seam_selection(const std::string& path, const TriangleMesh& tm,
     seams.push_back(ed.first);
   }
   return std::string();
+}
+
+/// the text of the CGAL selection file of the seams `seams` (edges of `tm`), which
+/// `read_seam_selection()` reads back: line 1 the selected vertices (`cones`), line 2 the
+/// selected faces (none), line 3 the seam edges as pairs of 0-based vertex indices in the
+/// order of `vertices(tm)`.
+template <class TriangleMesh>
+std::string seam_selection_text(const TriangleMesh& tm,
+                                const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams,
+                                const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& cones)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  std::size_t i = 0;
+  for(vertex_descriptor v : vertices(tm))
+    put(index, v, i++);
+  std::string text;
+  for(std::size_t k = 0; k < cones.size(); ++k)
+    text += (k > 0 ? " " : "") + std::to_string(get(index, cones[k]));
+  text += "\n\n";
+  for(std::size_t k = 0; k < seams.size(); ++k)
+    text += (k > 0 ? " " : "") + std::to_string(get(index, source(seams[k], tm))) + " " +
+            std::to_string(get(index, target(seams[k], tm)));
+  text += "\n";
+  return text;
 }
 
 /// The topology of a triangle mesh, or of a `Seam_mesh` (a mesh cut along its seams), for

@@ -8,8 +8,8 @@
 // Author(s)     : The measured boundary parameterization authors
 
 // An SVG picture of a UV layout: faces colored by their angle distortion (log scale, with a
-// legend), flipped faces in red and circled, the border as a closed polyline, the center
-// marked, and a caption. No CGAL here.
+// legend), flipped faces in red and circled, the border as a closed polyline, the seams of a
+// cut mesh over it (both sides of each), the center marked, and a caption. No CGAL here.
 //
 // Size: coordinates are integers in units of 1e-4 of the UV square (UV positions rounded to
 // 4 decimals), faces of one color share one path element, and each face is written as
@@ -37,6 +37,8 @@ struct Svg_layout
   std::vector<double> face_angle_distortion;              // per face, >= 0
   std::vector<bool> face_flipped;                         // per face: UV area <= 0
   std::vector<std::size_t> border;                        // vertex indices along the border loop
+  std::vector<std::array<std::size_t, 2> > seams;         // seam edges as vertex index pairs, one per side
+  std::size_t seam_edges = 0;                             // seam edges of the mesh (for the legend)
   std::size_t center = 0;                                 // vertex index of the center
   std::string center_label;                               // e.g. "center (vertex 12)"
   std::string title;                                      // first caption line (mesh name)
@@ -254,6 +256,20 @@ inline std::string svg_document(const Svg_layout& layout)
     s += "\"/>\n";
   }
 
+  // Seams: on the border, both sides of every seam edge, in orange.
+  if(!layout.seams.empty())
+  {
+    s += "<path fill=\"none\" stroke=\"#e66100\" stroke-width=\"" + std::to_string(2 * border_width) +
+         "\" stroke-linecap=\"round\" d=\"";
+    for(const std::array<std::size_t, 2>& e : layout.seams)
+    {
+      const auto &p = xy[e[0]], &q = xy[e[1]];
+      s += "M" + std::to_string(p[0]) + " " + std::to_string(p[1]) + "L" + std::to_string(q[0]) + " " +
+           std::to_string(q[1]);
+    }
+    s += "\"/>\n";
+  }
+
   // Circles around the flipped faces (which may be too small to see), unless there are too
   // many of them.
   if(flipped <= max_markers && !markers.empty())
@@ -362,6 +378,13 @@ inline std::string svg_document(const Svg_layout& layout)
   y += line + 100;
   s += "<path d=\"M" + std::to_string(legend_x) + " " + std::to_string(y) + "h400\" stroke=\"#000000\" stroke-width=\"22\"/>\n";
   legend_text(y, "border (" + std::to_string(layout.border.size()) + " vertices)");
+  if(!layout.seams.empty())
+  {
+    y += line + 100;
+    s += "<path d=\"M" + std::to_string(legend_x) + " " + std::to_string(y) +
+         "h400\" stroke=\"#e66100\" stroke-width=\"44\" stroke-linecap=\"round\"/>\n";
+    legend_text(y, "seams (" + std::to_string(layout.seam_edges) + " edges, both sides)");
+  }
   y += line + 100;
   s += center_marker(legend_x + 200, y, 1.) + "\n";
   legend_text(y, "center");

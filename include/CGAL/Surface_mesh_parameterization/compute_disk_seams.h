@@ -33,6 +33,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <string>
@@ -55,8 +57,9 @@ struct Disk_seams_options
 
   /// Cones to place: the cut passes through that many vertices where the conformal scale
   /// factor is most extreme (see `compute_disk_seams()`). Negative (the default): automatic,
-  /// `default_number_of_cones` on a closed surface of genus 0 and none otherwise. A closed
-  /// surface of genus 0 gets at least 2, the fewest a cut can end at.
+  /// `default_number_of_cones` on a closed surface of genus 0 (but no more than one vertex in
+  /// 16, so that a small mesh keeps interior vertices: an octahedron gets 2) and none
+  /// otherwise. A closed surface of genus 0 gets at least 2, the fewest a cut can end at.
   int number_of_cones = -1;
   /// Whether the cut joins every border loop (`true`, the default), or, on a surface of
   /// genus 0, leaves the holes (the border loops other than the longest) open for the
@@ -393,8 +396,9 @@ Disk_seams_problem cut_to_disk(const Indexed_surface& s, const Disk_seams_option
     report.number_of_loops = shortest_system(s, options, terminal, cut, report.shortened_paths);
 
   const int count = (options.number_of_cones >= 0) ? options.number_of_cones
-                    : (b == 0 && genus == 0)        ? Disk_seams_options::default_number_of_cones
-                                                    : 0;
+                    : (b == 0 && genus == 0)
+                      ? (std::min)(Disk_seams_options::default_number_of_cones, static_cast<int>(n / 16))
+                      : 0;
   const int wanted = (b == 0 && genus == 0) ? (std::max)(count, 2) : count;
   // on a genus-0 surface whose holes stay open, the cut ends on the longest border only
   std::vector<char> main_border(n, 0), avoided(n, 0);
