@@ -544,11 +544,9 @@ BOOST_AUTO_TEST_CASE(shortening_straightens_a_detour)
   const int n = 24, m = 12;
   Mesh mesh = make(torus(n, m));
   SMP::internal::Indexed_surface s;
-  std::vector<vertex_descriptor> vertex_of;
-  std::vector<edge_descriptor> edge_of;
+  SMP::internal::Surface_indexing<Mesh> ix(mesh);
   Report report;
-  BOOST_REQUIRE_EQUAL(SMP::internal::index_surface(mesh, get(CGAL::vertex_point, mesh), s, vertex_of, edge_of, report),
-                      SMP::NO_PROBLEM);
+  BOOST_REQUIRE_EQUAL(SMP::internal::index_surface(mesh, get(CGAL::vertex_point, mesh), s, ix, report), SMP::NO_PROBLEM);
   // soup vertex (i, j) is mesh vertex i*m + j (polygon_soup_to_polygon_mesh keeps the order)
   std::vector<char> cut(static_cast<std::size_t>(s.number_of_edges()), 0);
   auto mark = [&](int i0, int j0, int i1, int j1) {

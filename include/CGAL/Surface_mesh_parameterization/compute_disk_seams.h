@@ -158,31 +158,37 @@ inline const char* disk_seams_problem_message(Disk_seams_problem problem)
 
 namespace internal {
 
-// The indexed surface of a mesh (vertices in faces only), with the descriptors of its
-// vertices and edges; checks triangles, manifold vertices, one component and finite points.
-template <class TriangleMesh, class VertexPointMap>
-Disk_seams_problem index_surface(const TriangleMesh& tm, VertexPointMap vpm, Indexed_surface& s,
-                                 std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertex_of,
-                                 std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& edge_of,
-                                 Disk_seams_report<TriangleMesh>& report)
+// The mesh's descriptors and indices while it is indexed.
+template <class TriangleMesh>
+struct Surface_indexing
 {
-  typedef boost::graph_traits<TriangleMesh>            GT;
-  typedef typename GT::vertex_descriptor               vertex_descriptor;
-  typedef typename GT::halfedge_descriptor             halfedge_descriptor;
-  typedef typename GT::edge_descriptor                 edge_descriptor;
-  typedef typename GT::face_descriptor                 face_descriptor;
-  if(faces(tm).empty())
-    return EMPTY_INPUT_MESH;
-  auto vindex = get(CGAL::dynamic_vertex_property_t<int>(), tm);
-  auto eindex = get(CGAL::dynamic_edge_property_t<int>(), tm);
-  auto findex = get(CGAL::dynamic_face_property_t<int>(), tm);
-  for(vertex_descriptor v : vertices(tm))
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<int> >::const_type vertex_index;
+  typename boost::property_map<TriangleMesh, CGAL::dynamic_edge_property_t<int> >::const_type edge_index;
+  typename boost::property_map<TriangleMesh, CGAL::dynamic_face_property_t<int> >::const_type face_index;
+  std::vector<typename GT::vertex_descriptor> vertex_of;  // vertices in faces only
+  std::vector<typename GT::edge_descriptor> edge_of;
+
+  explicit Surface_indexing(const TriangleMesh& tm)
+    : vertex_index(get(CGAL::dynamic_vertex_property_t<int>(), tm)),
+      edge_index(get(CGAL::dynamic_edge_property_t<int>(), tm)),
+      face_index(get(CGAL::dynamic_face_property_t<int>(), tm))
+  { }
+};
+
+// Vertices (points, finite) and edges (ends, lengths, border flags) of the indexed surface.
+template <class TriangleMesh, class VertexPointMap>
+Disk_seams_problem index_vertices_and_edges(const TriangleMesh& tm, VertexPointMap vpm, Indexed_surface& s,
+                                            Surface_indexing<TriangleMesh>& ix, Disk_seams_report<TriangleMesh>& report)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  for(typename GT::vertex_descriptor v : vertices(tm))
   {
-    put(vindex, v, -1);
+    put(ix.vertex_index, v, -1);
     if(halfedge(v, tm) == GT::null_halfedge())
       continue;
-    put(vindex, v, static_cast<int>(vertex_of.size()));
-    vertex_of.push_back(v);
+    put(ix.vertex_index, v, static_cast<int>(ix.vertex_of.size()));
+    ix.vertex_of.push_back(v);
     const auto& p = get(vpm, v);
     s.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     if(!s.points.back().allFinite())
@@ -191,42 +197,45 @@ Disk_seams_problem index_surface(const TriangleMesh& tm, VertexPointMap vpm, Ind
       return NON_FINITE_COORDINATE;
     }
   }
-  for(edge_descriptor e : edges(tm))
+  for(typename GT::edge_descriptor e : edges(tm))
   {
-    put(eindex, e, static_cast<int>(edge_of.size()));
-    edge_of.push_back(e);
-    const halfedge_descriptor h = halfedge(e, tm);
-    const vertex_descriptor a = source(h, tm), b = target(h, tm);
-    s.edge_vertices.push_back({{get(vindex, a), get(vindex, b)}});
-    s.edge_lengths.push_back((s.points[static_cast<std::size_t>(get(vindex, a))] -
-                              s.points[static_cast<std::size_t>(get(vindex, b))]).norm());
+    put(ix.edge_index, e, static_cast<int>(ix.edge_of.size()));
+    ix.edge_of.push_back(e);
+    const typename GT::halfedge_descriptor h = halfedge(e, tm);
+    const int a = get(ix.vertex_index, source(h, tm)), b = get(ix.vertex_index, target(h, tm));
+    s.edge_vertices.push_back({{a, b}});
+    s.edge_lengths.push_back((s.points[static_cast<std::size_t>(a)] - s.points[static_cast<std::size_t>(b)]).norm());
     s.edge_faces.push_back({{-1, -1}});
     s.border_edge.push_back(is_border(e, tm) ? 1 : 0);
     if(is_border(h, tm) && is_border(opposite(h, tm), tm))
     {
-      report.problem_vertex = a;
+      report.problem_vertex = source(h, tm);
       return NON_MANIFOLD_VERTEX;  // an edge in no face
     }
   }
-  std::vector<int> corners(vertex_of.size(), 0);
-  for(face_descriptor f : faces(tm))
+  return NO_PROBLEM;
+}
+
+// Faces (triangles only) and the faces of every edge.
+template <class TriangleMesh>
+Disk_seams_problem index_faces(const TriangleMesh& tm, Indexed_surface& s, Surface_indexing<TriangleMesh>& ix,
+                               Disk_seams_report<TriangleMesh>& report)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  for(typename GT::face_descriptor f : faces(tm))
   {
-    put(findex, f, static_cast<int>(s.faces.size()));
+    put(ix.face_index, f, static_cast<int>(s.faces.size()));
     std::array<int, 3> t, te;
-    int k = 0;
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
+    std::size_t k = 0;
+    for(typename GT::halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
     {
       if(k == 3)
-      {
-        report.problem_face = f;
-        return FACE_NOT_A_TRIANGLE;
-      }
-      t[static_cast<std::size_t>(k)] = get(vindex, source(h, tm));
-      te[static_cast<std::size_t>(k)] = get(eindex, edge(h, tm));
-      ++corners[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+        break;
+      t[k] = get(ix.vertex_index, source(h, tm));
+      te[k] = get(ix.edge_index, edge(h, tm));
       ++k;
     }
-    if(k != 3)
+    if(k != 3 || next(next(next(halfedge(f, tm), tm), tm), tm) != halfedge(f, tm))
     {
       report.problem_face = f;
       return FACE_NOT_A_TRIANGLE;
@@ -234,24 +243,37 @@ Disk_seams_problem index_surface(const TriangleMesh& tm, VertexPointMap vpm, Ind
     s.faces.push_back(t);
     s.face_edges.push_back(te);
   }
-  for(edge_descriptor e : edges(tm))
+  for(typename GT::edge_descriptor e : edges(tm))
   {
-    const halfedge_descriptor h = halfedge(e, tm);
-    std::array<int, 2>& ef = s.edge_faces[static_cast<std::size_t>(get(eindex, e))];
+    const typename GT::halfedge_descriptor h = halfedge(e, tm);
+    std::array<int, 2>& ef = s.edge_faces[static_cast<std::size_t>(get(ix.edge_index, e))];
     if(!is_border(h, tm))
-      ef[0] = get(findex, face(h, tm));
+      ef[0] = get(ix.face_index, face(h, tm));
     if(!is_border(opposite(h, tm), tm))
-      ef[ef[0] < 0 ? 0 : 1] = get(findex, face(opposite(h, tm), tm));
+      ef[ef[0] < 0 ? 0 : 1] = get(ix.face_index, face(opposite(h, tm), tm));
   }
-  // rotations; a manifold vertex has one fan: all its corners around one halfedge cycle
-  s.border_vertex.assign(vertex_of.size(), 0);
+  return NO_PROBLEM;
+}
+
+// The rotation of edges around every vertex; a manifold vertex has one fan, so all its
+// corners lie around one cycle of halfedges with at most one border gap.
+template <class TriangleMesh>
+Disk_seams_problem index_rotations(const TriangleMesh& tm, Indexed_surface& s, Surface_indexing<TriangleMesh>& ix,
+                                   Disk_seams_report<TriangleMesh>& report)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  std::vector<int> corners(ix.vertex_of.size(), 0);
+  for(const std::array<int, 3>& t : s.faces)
+    for(int v : t)
+      ++corners[static_cast<std::size_t>(v)];
+  s.border_vertex.assign(ix.vertex_of.size(), 0);
   s.ring_offsets.assign(1, 0);
-  for(std::size_t i = 0; i < vertex_of.size(); ++i)
+  for(std::size_t i = 0; i < ix.vertex_of.size(); ++i)
   {
-    const vertex_descriptor v = vertex_of[i];
+    const typename GT::vertex_descriptor v = ix.vertex_of[i];
     int around = 0, gaps = 0;
-    halfedge_descriptor start = halfedge(v, tm);
-    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, tm), tm))
+    typename GT::halfedge_descriptor start = halfedge(v, tm);
+    for(typename GT::halfedge_descriptor h : halfedges_around_target(halfedge(v, tm), tm))
     {
       if(is_border(h, tm))
       {
@@ -267,11 +289,20 @@ Disk_seams_problem index_surface(const TriangleMesh& tm, VertexPointMap vpm, Ind
       return NON_MANIFOLD_VERTEX;
     }
     s.border_vertex[i] = (gaps == 1) ? 1 : 0;
-    for(halfedge_descriptor h : halfedges_around_target(start, tm))
-      s.ring_edges.push_back(get(eindex, edge(h, tm)));
+    for(typename GT::halfedge_descriptor h : halfedges_around_target(start, tm))
+      s.ring_edges.push_back(get(ix.edge_index, edge(h, tm)));
     s.ring_offsets.push_back(static_cast<int>(s.ring_edges.size()));
   }
-  // components and border loops
+  return NO_PROBLEM;
+}
+
+// The connected components of the faces (one is required) and the border loops.
+template <class TriangleMesh>
+Disk_seams_problem index_components_and_borders(const TriangleMesh& tm, Indexed_surface& s,
+                                                Surface_indexing<TriangleMesh>& ix,
+                                                Disk_seams_report<TriangleMesh>& report)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
   Disjoint_sets pieces(s.faces.size());
   std::size_t components = s.faces.size();
   for(const std::array<int, 2>& ef : s.edge_faces)
@@ -281,20 +312,39 @@ Disk_seams_problem index_surface(const TriangleMesh& tm, VertexPointMap vpm, Ind
   if(components > 1)
     return SEVERAL_COMPONENTS;
   auto walked = get(CGAL::dynamic_halfedge_property_t<bool>(), tm);
-  for(halfedge_descriptor h : halfedges(tm))
+  for(typename GT::halfedge_descriptor h : halfedges(tm))
     put(walked, h, false);
-  for(halfedge_descriptor h : halfedges(tm))
+  for(typename GT::halfedge_descriptor h : halfedges(tm))
   {
     if(!is_border(h, tm) || get(walked, h))
       continue;
     s.border_loops.emplace_back();
-    for(halfedge_descriptor b : halfedges_around_face(h, tm))
+    for(typename GT::halfedge_descriptor b : halfedges_around_face(h, tm))
     {
       put(walked, b, true);
-      s.border_loops.back().push_back(get(vindex, source(b, tm)));
+      s.border_loops.back().push_back(get(ix.vertex_index, source(b, tm)));
     }
   }
   return NO_PROBLEM;
+}
+
+// The indexed surface of a mesh (vertices in faces only), with the descriptors of its
+// vertices and edges in `ix`; checks triangles, manifold vertices, one component and finite
+// points, in this order of concern: coordinates, edges in no face, faces, vertices, components.
+template <class TriangleMesh, class VertexPointMap>
+Disk_seams_problem index_surface(const TriangleMesh& tm, VertexPointMap vpm, Indexed_surface& s,
+                                 Surface_indexing<TriangleMesh>& ix, Disk_seams_report<TriangleMesh>& report)
+{
+  if(faces(tm).empty())
+    return EMPTY_INPUT_MESH;
+  Disk_seams_problem problem = index_vertices_and_edges(tm, vpm, s, ix, report);
+  if(problem == NO_PROBLEM)
+    problem = index_faces(tm, s, ix, report);
+  if(problem == NO_PROBLEM)
+    problem = index_rotations(tm, s, ix, report);
+  if(problem == NO_PROBLEM)
+    problem = index_components_and_borders(tm, s, ix, report);
+  return problem;
 }
 
 inline Error_code error_code_of(Disk_seams_problem problem)
@@ -516,9 +566,8 @@ Error_code compute_disk_seams(const TriangleMesh& tm, SeamEdgeMap seam_edges, Se
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(vertex_point, tm));
   internal::Indexed_surface s;
-  std::vector<vertex_descriptor> vertex_of;
-  std::vector<edge_descriptor> edge_of;
-  report.problem = internal::index_surface(tm, vpm, s, vertex_of, edge_of, report);
+  internal::Surface_indexing<TriangleMesh> ix(tm);
+  report.problem = internal::index_surface(tm, vpm, s, ix, report);
   std::vector<char> cut;
   std::vector<int> cones;
   if(report.problem == NO_PROBLEM)
@@ -540,14 +589,14 @@ Error_code compute_disk_seams(const TriangleMesh& tm, SeamEdgeMap seam_edges, Se
   {
     if(!cut[e])
       continue;
-    put(seam_edges, edge_of[e], true);
+    put(seam_edges, ix.edge_of[e], true);
     for(int v : s.edge_vertices[e])
-      put(seam_vertices, vertex_of[static_cast<std::size_t>(v)], true);
+      put(seam_vertices, ix.vertex_of[static_cast<std::size_t>(v)], true);
     ++report.number_of_seam_edges;
     report.seam_length += s.edge_lengths[e];
   }
   for(int c : cones)
-    report.cones.push_back(vertex_of[static_cast<std::size_t>(c)]);
+    report.cones.push_back(ix.vertex_of[static_cast<std::size_t>(c)]);
   report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return OK;
 }
