@@ -7,13 +7,20 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// Uses the installed headers: the measured border inside CGAL's DCP on a small generated disk.
+// Uses the installed headers: the measured border inside CGAL's DCP on a small generated disk;
+// with the component Cholmod (MBP_WITH_CHOLMOD, set by the target MeasuredParameterization::Cholmod)
+// also the complete method solved by CHOLMOD, which must give the same UVs as Eigen's LDLT.
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#ifdef MBP_WITH_CHOLMOD
+#include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+#endif
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -47,5 +54,22 @@ int main()
   SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Measured_border_parameterizer_3<Mesh> > dcp(border);
   const SMP::Error_code status = SMP::parameterize(m, dcp, bhd, uv);
   std::cout << SMP::get_measured_error_message(status) << ", center " << border.center() << "\n";
-  return (status == SMP::OK && border.center() == c) ? 0 : 1;
+  if(status != SMP::OK || border.center() != c)
+    return 1;
+#ifdef MBP_WITH_CHOLMOD
+  auto uv_ldlt = m.add_property_map<Mesh::Vertex_index, K::Point_2>("v:ldlt").first;
+  auto uv_cholmod = m.add_property_map<Mesh::Vertex_index, K::Point_2>("v:cholmod").first;
+  SMP::Measured_conformal_parameterizer_3<Mesh> ldlt;
+  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>, SMP::Poisson_border_distance<Mesh>,
+                                          SMP::Cholmod_supernodal_cholesky_traits> cholmod;
+  if(SMP::parameterize(m, ldlt, bhd, uv_ldlt) != SMP::OK || SMP::parameterize(m, cholmod, bhd, uv_cholmod) != SMP::OK)
+    return 1;
+  double difference = 0.;
+  for(Mesh::Vertex_index v : m.vertices())
+    difference = (std::max)(difference, std::sqrt(CGAL::squared_distance(uv_ldlt[v], uv_cholmod[v])));
+  std::cout << "CHOLMOD: largest UV difference to LDLT " << difference << "\n";
+  if(!(difference <= 1e-9))
+    return 1;
+#endif
+  return 0;
 }
