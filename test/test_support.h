@@ -9,8 +9,8 @@
 
 // Shared helpers of the test suites: generated meshes with known geometry, and the real meshes
 // of the two tiers of tests:
-//  - core tier (every clone): CGAL's data meshes (Debian's libcgal-demo, extracted into the
-//    build tree) and the small meshes of test/data; core_mesh(name);
+//  - core tier (every clone): generated meshes, and CGAL's data meshes (Debian's
+//    libcgal-demo, extracted into the build tree): core_mesh(name);
 //  - extended tier: the project's meshes in MBP_SHARED_MESH_DIR (../shared/data/meshes by
 //    default); shared_mesh(name). Extended test cases carry the Boost.Test label "extended"
 //    (MBP_EXTENDED_TIER, MBP_TIERED_TEST_CASE): CTest runs them as the separate entry
@@ -67,8 +67,6 @@ inline bool file_exists(const std::string& path)
 
 // CGAL's data meshes ("" when the archive was not found at configure time).
 inline std::string cgal_mesh_dir() { return MBP_CGAL_MESH_DIR; }
-// The small meshes committed with the tests (test/data, README.md there).
-inline std::string test_data_dir() { return MBP_TEST_DATA_DIR; }
 // The project's meshes of the extended tier (may be absent): the environment variable
 // MBP_SHARED_MESH_DIR when set (test/extended_tier.sh sets it), else the configured folder.
 inline std::string shared_mesh_dir()
@@ -77,13 +75,10 @@ inline std::string shared_mesh_dir()
   return (dir != nullptr && *dir != '\0') ? std::string(dir) : std::string(MBP_SHARED_MESH_DIR);
 }
 
-// Path of a core-tier mesh: test/data first, then CGAL's data meshes. Fails the test (never
-// skips) when it is missing: every clone has these.
+// Path of a core-tier mesh, one of CGAL's data meshes. Fails the test (never skips) when it is
+// missing: every clone has these.
 inline std::string core_mesh(const std::string& name)
 {
-  const std::string local = test_data_dir() + "/" + name;
-  if(file_exists(local))
-    return local;
   BOOST_REQUIRE_MESSAGE(!cgal_mesh_dir().empty(),
                         "CGAL's data meshes were not found at configure time (MBP_CGAL_DATA_ARCHIVE: "
                         "Debian package libcgal-demo, installed by scripts/setup.sh)");
