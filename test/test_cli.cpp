@@ -1367,6 +1367,22 @@ BOOST_AUTO_TEST_CASE(reads_binary_ply_and_stl)
               obj.v[k][2] == double(float(p[2]))) ? 1 : 0;
   }
   BOOST_TEST(exact == first.size());
+
+  // 400 separate triangles: 1200 distinct vertices, more than the vertex table of a binary STL
+  // sized for 400 triangles holds at first (it grows); read whole, then refused as 400 pieces
+  mbp_test::Soup separate;
+  for(int t = 0; t < 400; ++t)
+  {
+    const double x = 3. * t;
+    separate.points.push_back({x, 0., 0.});
+    separate.points.push_back({x + 1., 0., 0.});
+    separate.points.push_back({x, 1., 0.});
+    separate.faces.push_back({std::size_t(3 * t), std::size_t(3 * t + 1), std::size_t(3 * t + 2)});
+  }
+  scratch.write("separate.stl", binary_stl(separate));
+  const Run s = scratch.run({"separate.stl", "separate.obj"});
+  BOOST_TEST(s.code == 1);
+  BOOST_TEST(contains(s.err, "it has 400 connected components"), s.err);
 }
 
 BOOST_AUTO_TEST_CASE(messages_name_the_actual_problem)

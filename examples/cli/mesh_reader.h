@@ -831,6 +831,9 @@ inline Read_error read_ply(Input_file& file, Polygon_soup& soup)
   }
   if(vertex == nullptr)
     return fail("the PLY file has no vertex element");
+  for(const Ply_element& el : elements)
+    if(el.properties.empty() && el.count > 0)
+      return fail("the element '" + el.name + "' has no properties (corrupt header)");
 
   // every element instance takes at least one byte per property (binary) or two (ASCII)
   const bool ascii = (format == "ascii");
@@ -1034,8 +1037,11 @@ private:
 
   void grow()
   {
+    std::size_t capacity = 2 * m_slots.size();  // a power of two (the probing masks with it)
+    while(capacity < 4 * m_soup.points.size())
+      capacity *= 2;
     std::vector<std::uint32_t>().swap(m_slots);
-    m_slots.assign(std::max<std::size_t>(1024, 4 * m_soup.points.size()), empty);
+    m_slots.assign(capacity, empty);
     for(std::uint32_t k = 0; k < m_soup.points.size(); ++k)
     {
       std::size_t s = hash(m_soup.points[k]) & (m_slots.size() - 1);

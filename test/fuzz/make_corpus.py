@@ -411,6 +411,11 @@ def main():
     files["obj_long_line.obj"] = "v " + "1" * 5000 + " 0 0\n"
     files["coincident_points.obj"] = obj([(2.0, 2.0, 2.0)] * 9, g2[1])
     files["huge_coordinates_mixed.obj"] = obj([(p[0] * 1e300, p[1] * 1e-10, p[2]) for p in g2[0]], g2[1])
+    files["ply_element_without_properties.ply"] = ("ply\nformat binary_little_endian 1.0\nelement vertex 3\n"
+                                                   "property float x\nproperty float y\nproperty float z\n"
+                                                   "element junk 4000000000\nelement face 1\n"
+                                                   "property list uchar int vertex_indices\nend_header\n").encode() + \
+        struct.pack("<9f", 0, 0, 0, 1, 0, 0, 0, 1, 0) + struct.pack("<B3i", 3, 0, 1, 2)
     files["coordinate_beyond_double.obj"] = "v 0 0 1e400\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
 
     for name, content in sorted(files.items()):
