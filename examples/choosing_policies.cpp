@@ -14,8 +14,8 @@
 //
 //   choosing_policies [INPUT] [OUTPUT.off]
 //
-// Default input: a real disk-like mesh of the project's data. The OFF file (default:
-// choosing_policies.off) is the UV layout of the automatic border.
+// Default input: CGAL's nefertiti.off (CGAL's data meshes, Debian package libcgal-demo).
+// The OFF file (default: choosing_policies.off) is the UV layout of the automatic border.
 //
 // Configurations:
 //   1. the paper's MBPPP (the defaults): Poisson center + Poisson border distances
@@ -143,11 +143,11 @@ int main(int argc, char** argv)
   failures += status != SMP::OK;
   if(status == SMP::OK)
   {
-    // every border tried, in the order tried; -1: none valid, the measured border repaired
+    // every layout tried, in the order tried, and the kept one
     const auto& report = automatic.last_report();
-    const char* family_names[] = {"circle", "policy border", "second border"};
+    const char* family_names[] = {"circle", "measured", "conformal"};
     std::cout << "  automatic border: " << report.border_candidates.size() << " candidates in "
-              << report.search_seconds << " s\n";
+              << report.interior_seconds << " s\n";
     for(std::size_t i = 0; i < report.border_candidates.size(); ++i)
     {
       const auto& c = report.border_candidates[i];

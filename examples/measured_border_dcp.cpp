@@ -11,7 +11,7 @@
 //
 //   measured_border_dcp [INPUT] [OUTPUT.off]
 //
-// Reads a disk-like triangle mesh (default: a real mesh from the project's data), flattens it
+// Reads a disk-like triangle mesh (default: CGAL's nefertiti.off), flattens it
 // with CGAL's Discrete_conformal_map_parameterizer_3 using the measured border of the paper
 // "Measured boundary parameterization based on Poisson's equation", writes the UV layout as
 // an OFF file (default: measured_border_dcp.off), and compares the angle distortion with
@@ -65,7 +65,16 @@ int main(int argc, char** argv)
     std::cerr << "error: " << SMP::get_measured_error_message(status) << "\n";
     return EXIT_FAILURE;
   }
+  // CGAL's parameterizers return OK whatever the layout: a measured border is star-shaped but
+  // not always convex, so the discrete conformal interior can fold. Check the result (the
+  // global test: no flipped triangle, no two overlapping triangles).
   const SMP::Parameterization_quality measured = SMP::measure_quality(mesh, faces(mesh), uvmap);
+  if(!SMP::is_one_to_one_uv_map(mesh, faces(mesh), uvmap))
+  {
+    std::cerr << "error: the layout is not one-to-one (" << measured.flipped_faces << " flipped faces); "
+              << "Measured_conformal_parameterizer_3 repairs such layouts\n";
+    return EXIT_FAILURE;
+  }
   std::cout << input << ": " << num_vertices(mesh) << " vertices, center " << border.center() << " at "
             << mesh.point(border.center()) << ", border of " << border.border_vertices().size()
             << " vertices (" << (border.is_border_convex() ? "convex" : "not convex") << ")\n";

@@ -13,7 +13,7 @@
 //
 //   polyhedron_parameterization [INPUT] [OUTPUT.off]
 //
-// Reads a disk-like triangle mesh (default: a real mesh of the project's data), writes the UV
+// Reads a disk-like triangle mesh (default: CGAL's nefertiti.off), writes the UV
 // layout as an OFF file (default: polyhedron_parameterization.off), and prints the report of
 // the call (center, time of every stage, factorizations) and the quality of the map.
 
@@ -93,7 +93,7 @@ int main(int argc, char** argv)
   else
     std::cout << "repair: none needed\n";
 
-  // The quality of the map (METHOD.md section 5) and CGAL's global overlap test.
+  // The quality of the map (measure_quality.h) and the global overlap test.
   const SMP::Parameterization_quality q = SMP::measure_quality(mesh, faces(mesh), uvmap);
   std::cout << "angle distortion " << q.angle_distortion << " (per corner " << q.angle_distortion_per_corner
             << "), quasi-conformal mean " << q.quasi_conformal_mean << " max " << q.quasi_conformal_max

@@ -13,9 +13,8 @@
 //
 //   seam_parameterization [INPUT] [SEAMS.selection.txt] [OUTPUT.obj]
 //
-// Defaults: fandisk.off (a closed CAD model of genus 0, from the project's data or CGAL's
-// data set), the seams data/fandisk.selection.txt beside this file, and
-// seam_parameterization.obj. The seams are a CGAL selection file, as in CGAL's
+// Defaults: fandisk.off (a closed CAD model of genus 0, from CGAL's data meshes), the seams
+// data/fandisk.selection.txt beside this file, and seam_parameterization.obj. The seams are a CGAL selection file, as in CGAL's
 // seam_Polyhedron_3 example: its third line lists the seam edges as pairs of 0-based vertex
 // indices in file order (the first two lines, selected vertices and faces, are not used).
 //
