@@ -43,6 +43,37 @@ std::string not_a_disk(TriangleMesh& mesh)
   return "";
 }
 
+// (CGAL::Surface_mesh)
+// 1-to-4 midpoint subdivision: every edge split at its midpoint, every triangle into four.
+// The surface does not move. Returns false on a non-triangle face.
+template <class Mesh>
+bool midpoint_subdivision(const Mesh& in, Mesh& out)
+{
+  out.clear();
+  out.reserve(num_vertices(in) + num_edges(in), 2 * num_edges(in) + 3 * num_faces(in), 4 * num_faces(in));
+  std::vector<typename Mesh::Vertex_index> corner(in.number_of_vertices() + in.number_of_removed_vertices());
+  std::vector<typename Mesh::Vertex_index> middle(in.number_of_edges() + in.number_of_removed_edges());
+  for(typename Mesh::Vertex_index v : vertices(in))
+    corner[v.idx()] = out.add_vertex(in.point(v));
+  for(auto e : edges(in))
+    middle[e.idx()] = out.add_vertex(CGAL::midpoint(in.point(source(halfedge(e, in), in)),
+                                                    in.point(target(halfedge(e, in), in))));
+  for(auto f : faces(in))
+  {
+    const typename Mesh::Halfedge_index h0 = halfedge(f, in), h1 = next(h0, in), h2 = next(h1, in);
+    if(next(h2, in) != h0)
+      return false;
+    const typename Mesh::Vertex_index a = corner[source(h0, in).idx()], b = corner[source(h1, in).idx()],
+                            c = corner[source(h2, in).idx()];
+    const typename Mesh::Vertex_index ab = middle[edge(h0, in).idx()], bc = middle[edge(h1, in).idx()],
+                            ca = middle[edge(h2, in).idx()];
+    if(out.add_face(a, ab, ca) == Mesh::null_face() || out.add_face(ab, b, bc) == Mesh::null_face() ||
+       out.add_face(ca, bc, c) == Mesh::null_face() || out.add_face(ab, bc, ca) == Mesh::null_face())
+      return false;
+  }
+  return true;
+}
+
 } // namespace mbp_benchmark
 
 #endif // MBP_BENCHMARK_SUPPORT_H

@@ -120,9 +120,14 @@ typedef Mesh::Property_map<vertex_descriptor, K::Point_2>       UV_map;
 typedef std::chrono::steady_clock                               Clock;
 
 typedef SMP::Measured_conformal_parameterizer_3<Mesh>           Ours_ldlt;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default, CGAL::Default,
+                                                CGAL::Parallel_tag> Ours_ldlt_parallel;
 #ifdef MBP_WITH_CHOLMOD
 typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default,
                                                 SMP::Cholmod_supernodal_cholesky_traits> Ours_cholmod;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default,
+                                                SMP::Cholmod_supernodal_cholesky_traits,
+                                                CGAL::Parallel_tag> Ours_cholmod_parallel;
 #endif
 typedef SMP::Discrete_conformal_map_parameterizer_3<Mesh>       Cgal_dcp;
 typedef SMP::LSCM_parameterizer_3<Mesh>                         Cgal_lscm;
@@ -189,10 +194,9 @@ Run time_parameterize(Mesh& mesh, Parameterizer& parameterizer, halfedge_descrip
 }
 
 template <class Ours>
-Run time_ours(Mesh& mesh, bool concurrent, halfedge_descriptor bhd, UV_map uv)
+Run time_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv)
 {
   Ours ours;
-  ours.use_concurrency(concurrent);
   Run r = time_parameterize(mesh, ours, bhd, uv);  // copies share the report
   const typename Ours::Report& report = ours.last_report();
   r.is_ours = true;
@@ -216,11 +220,11 @@ Run run_method(int m, Mesh& mesh, halfedge_descriptor bhd, UV_map uv)
 {
   switch(m)
   {
-  case OURS_LDLT:        return time_ours<Ours_ldlt>(mesh, true, bhd, uv);
-  case OURS_LDLT_SEQ:    return time_ours<Ours_ldlt>(mesh, false, bhd, uv);
+  case OURS_LDLT:        return time_ours<Ours_ldlt_parallel>(mesh, bhd, uv);
+  case OURS_LDLT_SEQ:    return time_ours<Ours_ldlt>(mesh, bhd, uv);
 #ifdef MBP_WITH_CHOLMOD
-  case OURS_CHOLMOD:     return time_ours<Ours_cholmod>(mesh, true, bhd, uv);
-  case OURS_CHOLMOD_SEQ: return time_ours<Ours_cholmod>(mesh, false, bhd, uv);
+  case OURS_CHOLMOD:     return time_ours<Ours_cholmod_parallel>(mesh, bhd, uv);
+  case OURS_CHOLMOD_SEQ: return time_ours<Ours_cholmod>(mesh, bhd, uv);
 #endif
   case CGAL_DCP:  { Cgal_dcp p;  return time_parameterize(mesh, p, bhd, uv); }
   case CGAL_LSCM: { Cgal_lscm p; return time_parameterize(mesh, p, bhd, uv); }
@@ -256,13 +260,8 @@ bool interior_cotangent_laplacian(const Mesh& mesh, halfedge_descriptor bhd, Eig
   std::vector<int> unknown(patch.number_of_vertices());
   for(std::size_t i = 0; i < unknown.size(); ++i)
     unknown[i] = patch.interior_index(i);
-  std::vector<SMP::internal::Triplet> triplets;
-  SMP::internal::laplacian_triplets(patch.faces_indices(), unknown,
-                                    SMP::internal::Cotangent_weight{&patch.half_cotangents()}, triplets);
-  const int n = static_cast<int>(patch.interior_vertices().size());
-  A.resize(n, n);
-  A.setFromTriplets(triplets.begin(), triplets.end());
-  A.makeCompressed();
+  patch.pattern().assemble(patch.faces_indices(), unknown, static_cast<int>(patch.interior_vertices().size()),
+                           SMP::internal::Cotangent_weight{&patch.half_cotangents()}, A);
   return true;
 }
 
@@ -516,34 +515,7 @@ double other_load(const Cpu_sample& a, const Cpu_sample& b)
 
 using mbp_benchmark::not_a_disk;
 
-// 1-to-4 midpoint subdivision: every edge split at its midpoint, every triangle into four.
-// The surface does not move. Returns false on a non-triangle face.
-bool midpoint_subdivision(const Mesh& in, Mesh& out)
-{
-  out.clear();
-  out.reserve(num_vertices(in) + num_edges(in), 2 * num_edges(in) + 3 * num_faces(in), 4 * num_faces(in));
-  std::vector<vertex_descriptor> corner(in.number_of_vertices() + in.number_of_removed_vertices());
-  std::vector<vertex_descriptor> middle(in.number_of_edges() + in.number_of_removed_edges());
-  for(vertex_descriptor v : vertices(in))
-    corner[v.idx()] = out.add_vertex(in.point(v));
-  for(auto e : edges(in))
-    middle[e.idx()] = out.add_vertex(CGAL::midpoint(in.point(source(halfedge(e, in), in)),
-                                                    in.point(target(halfedge(e, in), in))));
-  for(auto f : faces(in))
-  {
-    const halfedge_descriptor h0 = halfedge(f, in), h1 = next(h0, in), h2 = next(h1, in);
-    if(next(h2, in) != h0)
-      return false;
-    const vertex_descriptor a = corner[source(h0, in).idx()], b = corner[source(h1, in).idx()],
-                            c = corner[source(h2, in).idx()];
-    const vertex_descriptor ab = middle[edge(h0, in).idx()], bc = middle[edge(h1, in).idx()],
-                            ca = middle[edge(h2, in).idx()];
-    if(out.add_face(a, ab, ca) == Mesh::null_face() || out.add_face(ab, b, bc) == Mesh::null_face() ||
-       out.add_face(ca, bc, c) == Mesh::null_face() || out.add_face(ab, bc, ca) == Mesh::null_face())
-      return false;
-  }
-  return true;
-}
+using mbp_benchmark::midpoint_subdivision;
 
 // ---------------------------------------------------------------------------------------
 // Measurements of one mesh

@@ -132,7 +132,6 @@ struct Run
   double blend = 0., repair_seconds = 0., total_seconds = 0.;
   int candidates = 0, chosen = -1, chosen_family = -1;
   double chosen_blend = 0., search_seconds = 0.;
-  bool second_is_poisson = false;
 };
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
@@ -166,8 +165,7 @@ Run run_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv, Mode mode)
     r.chosen_family = static_cast<int>(report.border_candidates[static_cast<std::size_t>(r.chosen)].family);
     r.chosen_blend = report.border_candidates[static_cast<std::size_t>(r.chosen)].blend;
   }
-  r.search_seconds = report.search_seconds;
-  r.second_is_poisson = report.second_border_is_poisson;
+  r.search_seconds = report.interior_seconds + report.conformal_border_seconds;
   if constexpr(std::is_same<Distance, SGDM>::value)
   {
     const typename SGDM::Failure& f = p.border_parameterizer().border_distance().last_failure();
@@ -574,7 +572,7 @@ void auto_table(std::vector<Mesh_entry>& meshes, int runs)
       else if(a.first.chosen_family == 0)
         chosen = "circle";
       else
-        chosen = std::string(a.first.chosen_family == 1 ? "Poisson" : (a.first.second_is_poisson ? "Poisson" : "geodesic")) +
+        chosen = std::string(a.first.chosen_family == 1 ? "measured" : "conformal") +
                  " t=" + fmt("%.3f", a.first.chosen_blend);
     }
     const double ratio = angle(a) / angle(r[CIRCLE]);

@@ -13,11 +13,15 @@
 
 A center locator chooses the vertex around which the measured border is laid out as a polar
 map (step 1 of the method). It works on a `CGAL::Surface_mesh_parameterization::Parameterization_patch_3`,
-the checked and indexed view of the disk being parameterized, which gives access to the mesh,
-the vertex positions, the faces, the border loop and the interior vertices, and owns the
-factorization of the interior cotangent Laplacian that all steps share
-(`factorize_interior_laplacian()`, `solve_interior()`). A locator that needs that matrix
-must use it through the patch, so that the factorization is done once.
+the checked and indexed view of the disk being parameterized. What a locator may use of it:
+- the checked disk, read only: `number_of_vertices()`, `point(i)`, `faces_indices()`,
+  `border()`, `interior_vertices()`, `interior_index(i)`, `is_virtual(i)`, `vertex(i)`,
+  `index(v)`, `cotangent_row_sums()`, `mean_spoke_lengths()`;
+- the interior system, the cotangent Laplacian `L_II` with the border eliminated, factorized
+  once for every step (`solve_interior()` for one or many right-hand sides). A locator that
+  needs that matrix must use it through the patch, so that the factorization is done once;
+- `shared_object<T>()`, to share center-independent work with the border distance (for
+  example a geodesic solver's precomputation).
 
 The center must be an interior vertex of the patch (not on its border loop). The choice
 must be deterministic: the same mesh gives the same center.

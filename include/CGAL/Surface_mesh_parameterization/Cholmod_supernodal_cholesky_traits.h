@@ -11,82 +11,210 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_CHOLMOD_SUPERNODAL_CHOLESKY_TRAITS_H
 
 /// \file Cholmod_supernodal_cholesky_traits.h
-/// CHOLMOD's supernodal sparse Cholesky factorization (SuiteSparse) as solver traits.
-/// Including this header requires SuiteSparse's `cholmod.h`; programs must link CHOLMOD and a
-/// BLAS (with CMake: the `MeasuredParameterization::Cholmod` target, defined when CHOLMOD was
-/// found). A multithreaded BLAS such as OpenBLAS makes the factorization use every core.
 
-#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_sparse_matrix.h>
 
-#include <Eigen/CholmodSupport>
+#include <Eigen/Core>
+#include <Eigen/Sparse>
 
-#include <dlfcn.h>
+#include <cholmod.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <memory>
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
 ///
-/// CHOLMOD's supernodal \f$ LL^T \f$ factorization through CGAL's `Eigen_solver_traits`: a
-/// model of `SparseLinearAlgebraWithFactorTraits_d` for the symmetric positive definite
-/// systems of this package, usually the fastest on large meshes.
+/// CHOLMOD's supernodal Cholesky factorization (SuiteSparse) for the symmetric positive
+/// definite systems of this package, a model of `SparseLinearAlgebraWithFactorTraits_d`
+/// (link `MeasuredParameterization::Cholmod`).
 ///
-/// The fill-reducing ordering is AMD alone. CHOLMOD's default also tries METIS when AMD's
-/// fill is large and keeps the better one; on mesh Laplacians METIS saves some factorization
-/// time but its ordering costs more than it saves (measured on a 700k-vertex mesh: AMD
-/// 0.7 s analysis + 2.1 s factorization; the default 4.1 s + 1.4 s).
+/// The fill-reducing ordering is chosen, not left to CHOLMOD's default sequence of trials:
+/// `NESTED_DISSECTION` (METIS's nested dissection, CHOLMOD's `CHOLMOD_METIS`) by default,
+/// chosen by measurement on mesh Laplacians (`benchmark/README.md`, section *CHOLMOD
+/// ordering*: less fill and faster factorizations than AMD from 45k vertices up), or
+/// `AMD`. The symbolic analysis (ordering and supernodal structure) is computed once and
+/// reused by every later factorization of a matrix with the same pattern; only the numeric
+/// factorization is redone.
+///
+/// The factor lives in CHOLMOD's memory; the matrix is not needed after `factor()`.
+/// Copies share the factor (as `CGAL::Eigen_solver_traits` share their solver): give each
+/// system its own object.
+///
+/// CHOLMOD's supernodal factorization runs its dense blocks in the BLAS, which may be
+/// multithreaded (OpenBLAS starts a thread per core by default): this class never changes
+/// the BLAS's settings. Set them in your program (environment variable
+/// `OPENBLAS_NUM_THREADS`, or `openblas_set_num_threads()`).
 class Cholmod_supernodal_cholesky_traits
-  : public CGAL::Eigen_solver_traits<
-             Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >
 {
-  typedef CGAL::Eigen_solver_traits<
-            Eigen::CholmodSupernodalLLT<CGAL::Eigen_sparse_matrix<double>::EigenType> > Base;
-
 public:
-  Cholmod_supernodal_cholesky_traits()
+  /// Number type
+  typedef double                               NT;
+  /// Matrix type (both triangles stored; the lower one is read)
+  typedef CGAL::Eigen_sparse_matrix<double>    Matrix;
+  /// Vector type
+  typedef CGAL::Eigen_vector<double>           Vector;
+
+  /// The fill-reducing orderings.
+  enum Ordering
   {
-    cholmod_common& common = Base::solver().cholmod();
-    common.nmethods = 1;
-    common.method[0].ordering = CHOLMOD_AMD;
-    common.postorder = 1;
+    /// approximate minimum degree
+    AMD,
+    /// METIS's nested dissection
+    NESTED_DISSECTION
+  };
+
+  /// creates traits with the given ordering.
+  explicit Cholmod_supernodal_cholesky_traits(Ordering ordering = NESTED_DISSECTION)
+    : m_state(std::make_shared<State>(ordering))
+  { }
+
+  /// the ordering.
+  Ordering ordering() const { return m_state->ordering; }
+
+  /// factorizes `A` (symmetric positive definite; its lower triangle is read). Sets `D` to 1.
+  /// Returns `false` when `A` is not positive definite or CHOLMOD fails.
+  bool factor(const Matrix& A, NT& D)
+  {
+    D = 1.;
+    return m_state->factor(A.eigen_object());
   }
 
-  /// While an object of this type lives, OpenBLAS (when it is the BLAS in use) runs on one
-  /// thread; the previous thread count is restored on destruction. The parameterizers of
-  /// this package hold one while they run two factorizations concurrently: two
-  /// factorizations on one BLAS thread each are much faster than two that each start a
-  /// thread per core (measured on a 700k-vertex mesh and 2 cores: 4.7 s against 8.7 s; 7.7 s
-  /// one after the other). With another BLAS this does nothing.
-  class Concurrent_section
+  /// solves `A X = B` with the factor.
+  bool linear_solver(const Vector& B, Vector& X)
   {
-    typedef void (*Set)(int);
-    typedef int (*Get)();
+    Eigen::MatrixXd x;
+    if(!m_state->solve(Eigen::MatrixXd(B), x))
+      return false;
+    X = x.col(0);
+    return true;
+  }
 
-  public:
-    Concurrent_section()
-      : m_set(reinterpret_cast<Set>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"))),
-        m_get(reinterpret_cast<Get>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads")))
+  /// solves `A X = B` for every column of `B` with one pass over the factor.
+  bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) { return m_state->solve(B, X); }
+
+  /// number of nonzeros of the factor (0 before a factorization).
+  std::size_t factor_nonzeros() const
+  {
+    const cholmod_factor* L = m_state->L;
+    if(L == nullptr || !L->is_super)
+      return 0;
+    const int* super = static_cast<const int*>(L->super);
+    const int* pi = static_cast<const int*>(L->pi);
+    std::size_t nnz = 0;
+    for(std::size_t s = 0; s < L->nsuper; ++s)  // a supernode: a dense trapezoid
     {
-      if(m_set != nullptr && m_get != nullptr)
+      const std::size_t columns = static_cast<std::size_t>(super[s + 1] - super[s]);
+      const std::size_t rows = static_cast<std::size_t>(pi[s + 1] - pi[s]);
+      nnz += columns * rows - columns * (columns - 1) / 2;
+    }
+    return nnz;
+  }
+
+private:
+  struct State
+  {
+    explicit State(Ordering o) : ordering(o)
+    {
+      cholmod_start(&common);
+      common.nmethods = 1;
+      common.method[0].ordering = (o == AMD) ? CHOLMOD_AMD : CHOLMOD_METIS;
+      common.postorder = 1;
+      common.supernodal = CHOLMOD_SUPERNODAL;
+    }
+    ~State()
+    {
+      if(L != nullptr)
+        cholmod_free_factor(&L, &common);
+      cholmod_finish(&common);
+    }
+    State(const State&) = delete;
+    State& operator=(const State&) = delete;
+
+    // A view of an Eigen column-major compressed matrix, lower triangle used.
+    static cholmod_sparse view(const Eigen::SparseMatrix<double>& A)
+    {
+      cholmod_sparse s;
+      s.nrow = static_cast<std::size_t>(A.rows());
+      s.ncol = static_cast<std::size_t>(A.cols());
+      s.nzmax = static_cast<std::size_t>(A.nonZeros());
+      s.p = const_cast<int*>(A.outerIndexPtr());
+      s.i = const_cast<int*>(A.innerIndexPtr());
+      s.nz = nullptr;
+      s.x = const_cast<double*>(A.valuePtr());
+      s.z = nullptr;
+      s.stype = -1;
+      s.itype = CHOLMOD_INT;
+      s.xtype = CHOLMOD_REAL;
+      s.dtype = CHOLMOD_DOUBLE;
+      s.sorted = 1;
+      s.packed = 1;
+      return s;
+    }
+
+    bool same_pattern(const Eigen::SparseMatrix<double>& A) const
+    {
+      if(L == nullptr || A.rows() != static_cast<Eigen::Index>(pattern_outer.size()) - 1 ||
+         A.nonZeros() != static_cast<Eigen::Index>(pattern_inner.size()))
+        return false;
+      return std::equal(pattern_outer.begin(), pattern_outer.end(), A.outerIndexPtr()) &&
+             std::equal(pattern_inner.begin(), pattern_inner.end(), A.innerIndexPtr());
+    }
+
+    bool factor(const Eigen::SparseMatrix<double>& A)
+    {
+      if(!A.isCompressed() || A.rows() != A.cols() || A.rows() == 0)
+        return false;
+      cholmod_sparse s = view(A);
+      if(!same_pattern(A))
       {
-        m_previous = m_get();
-        m_set(1);
+        if(L != nullptr)
+          cholmod_free_factor(&L, &common);
+        L = cholmod_analyze(&s, &common);
+        if(L == nullptr || common.status != CHOLMOD_OK)
+          return false;
+        pattern_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.rows() + 1);
+        pattern_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
       }
+      factorized = cholmod_factorize(&s, L, &common) != 0 && common.status == CHOLMOD_OK &&
+                   L->minor == L->n;
+      return factorized;
     }
-    ~Concurrent_section()
-    {
-      if(m_set != nullptr && m_get != nullptr && m_previous > 0)
-        m_set(m_previous);
-    }
-    Concurrent_section(const Concurrent_section&) = delete;
-    Concurrent_section& operator=(const Concurrent_section&) = delete;
 
-  private:
-    Set m_set;
-    Get m_get;
-    int m_previous = 0;
+    bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
+    {
+      if(!factorized || B.rows() != static_cast<Eigen::Index>(L->n))
+        return false;
+      cholmod_dense b;
+      b.nrow = static_cast<std::size_t>(B.rows());
+      b.ncol = static_cast<std::size_t>(B.cols());
+      b.nzmax = b.nrow * b.ncol;
+      b.d = b.nrow;
+      b.x = const_cast<double*>(B.data());
+      b.z = nullptr;
+      b.xtype = CHOLMOD_REAL;
+      b.dtype = CHOLMOD_DOUBLE;
+      cholmod_dense* x = cholmod_solve(CHOLMOD_A, L, &b, &common);
+      if(x == nullptr)
+        return false;
+      X = Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(x->x), B.rows(), B.cols());
+      cholmod_free_dense(&x, &common);
+      return common.status == CHOLMOD_OK;
+    }
+
+    Ordering ordering;
+    cholmod_common common;
+    cholmod_factor* L = nullptr;
+    bool factorized = false;
+    std::vector<int> pattern_outer, pattern_inner;
   };
+
+  std::shared_ptr<State> m_state;
 };
 
 } // namespace Surface_mesh_parameterization

@@ -199,7 +199,10 @@ public:
     if(status == OK)
     {
       record.border_uv = uv;
-      record.edge_lengths = data.lengths;
+      record.edge_lengths = data.lengths;  // in the mesh's unit of length
+      for(std::vector<double>* l : {&record.edge_lengths, &record.closed_lengths})
+        for(double& x : *l)
+          x *= patch.length_unit();
       record.geodesic_curvatures = data.curvature;
       record.corrections = data.correction;
       record.turning_angles = data.turning;

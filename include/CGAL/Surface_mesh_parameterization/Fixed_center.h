@@ -52,7 +52,7 @@ public:
   template <class Patch>
   Error_code locate_center(Patch& patch, std::size_t& center) const
   {
-    if(m_vertex == boost::graph_traits<TriangleMesh>::null_vertex())
+    if(!patch.contains(m_vertex))  // null, not in this component, or not a vertex of the mesh
       return ERROR_WRONG_PARAMETER;
     const int id = patch.index(m_vertex);
     if(id < 0 || patch.is_on_border(static_cast<std::size_t>(id)))

@@ -16,10 +16,12 @@
 #include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
+#include <CGAL/Surface_mesh_parameterization/internal/concurrency.h>
 #include <CGAL/Surface_mesh_parameterization/internal/polar_map.h>
 
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Default.h>
+#include <CGAL/tags.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -45,20 +47,6 @@ template <class Policy, class Patch>
 struct Has_prepare<Policy, Patch,
   std::void_t<decltype(std::declval<const Policy&>().prepare(std::declval<Patch&>()))> >
   : std::true_type {};
-
-// Solver traits may define a `Concurrent_section` type: an object of it is held while two
-// factorizations run concurrently (for example to keep a threaded BLAS on one thread each).
-template <class SolverTraits, class = void>
-struct Concurrent_section
-{
-  struct type {};
-};
-
-template <class SolverTraits>
-struct Concurrent_section<SolverTraits, std::void_t<typename SolverTraits::Concurrent_section> >
-{
-  typedef typename SolverTraits::Concurrent_section type;
-};
 
 } // namespace internal
 
@@ -104,12 +92,20 @@ struct Concurrent_section<SolverTraits, std::void_t<typename SolverTraits::Concu
 ///         `Poisson_border_distance<TriangleMesh_>`.
 /// \tparam SolverTraits_ a model of `SparseLinearAlgebraWithFactorTraits_d` for the linear
 ///         systems of the policies. %Default: `Default_sparse_cholesky_traits`.
+/// \tparam ConcurrencyTag_ `CGAL::Sequential_tag` (default: no thread is started) or
+///         `CGAL::Parallel_tag`: the border distance policy's `prepare()` step (for the
+///         Poisson distances, the factorization of the spring Laplacian) runs in a second
+///         thread while the center is located, and multi-column solves split their columns
+///         over two threads. Results do not depend on it. The package never changes
+///         process-wide settings: a threaded BLAS under CHOLMOD (OpenBLAS) uses its own
+///         threads, set by the user (`OPENBLAS_NUM_THREADS`, or `openblas_set_num_threads()`).
 ///
 /// `CGAL::Default` may be given for any policy to get its default.
 template <class TriangleMesh_,
           class CenterLocator_ = Poisson_center_locator<TriangleMesh_>,
           class BorderDistance_ = Poisson_border_distance<TriangleMesh_>,
-          class SolverTraits_ = Default>
+          class SolverTraits_ = Default,
+          class ConcurrencyTag_ = CGAL::Sequential_tag>
 class Measured_border_parameterizer_3
 {
 public:
@@ -125,6 +121,8 @@ public:
                                 Poisson_border_distance<TriangleMesh_> >::type  Border_distance;
   /// Solver traits type
   typedef typename internal::Get_solver_traits<SolverTraits_>::type              Solver_traits;
+  /// Concurrency tag
+  typedef ConcurrencyTag_                                                        Concurrency_tag;
   /// The patch type the policies work on
   typedef Parameterization_patch_3<TriangleMesh_, Solver_traits>                 Patch;
 
@@ -221,8 +219,8 @@ public:
   /// border distance policy prepares.
   ///
   /// When the border distance policy has a `prepare(patch)` step (center-independent work,
-  /// such as a factorization) and concurrency is on (the default, see `use_concurrency()`),
-  /// that step runs in a second thread while the center is located.
+  /// such as a factorization) and `ConcurrencyTag_` is `CGAL::Parallel_tag`, that step runs
+  /// in a second thread while the center is located.
   template <class AnyPatch>
   Error_code parameterize_border(AnyPatch& patch, std::vector<Eigen::Vector2d>& uv,
                                  bool factorize_interior = false)
@@ -238,15 +236,12 @@ public:
     Error_code status = OK;
     bool located = false;
     {
-      std::unique_ptr<typename internal::Concurrent_section<typename AnyPatch::Solver_traits>::type> section;
+      patch.set_parallel(internal::Is_parallel<Concurrency_tag>::value);
       std::future<Error_code> preparing;
       if constexpr(internal::Has_prepare<Border_distance, AnyPatch>::value)
       {
-        if(m_concurrent)
-        {
-          section = std::make_unique<typename internal::Concurrent_section<typename AnyPatch::Solver_traits>::type>();
-          preparing = std::async(std::launch::async, [this, &patch] { return m_border_distance.prepare(patch); });
-        }
+        if constexpr(internal::Is_parallel<Concurrency_tag>::value)
+          preparing = internal::start_thread([this, &patch] { return m_border_distance.prepare(patch); });
         else
           prepared = m_border_distance.prepare(patch);
       }
@@ -265,6 +260,7 @@ public:
     if(status == OK)
     {
       status = m_border_distance.compute_border_distances(patch, center, distances);
+      patch.release_spring_laplacian();  // only one factor stays alive: the interior system's
       t0 = Clock::now();
       record.distance_seconds = std::chrono::duration<double>(t0 - t1).count();
     }
@@ -283,7 +279,9 @@ public:
       record.center = patch.vertex(center);
     if(status == OK)
     {
-      record.border_distances = distances;
+      record.border_distances = distances;  // in the mesh's unit of length
+      for(double& d : record.border_distances)
+        d *= patch.length_unit();
       record.border_angles = polar.angles;
       record.polar_origin = polar.origin;
       record.polar_scale = polar.scale;
@@ -311,12 +309,6 @@ public:
   /// the polar angle of each border vertex in the last call.
   const std::vector<double>& border_angles() const { return m_record->border_angles; }
 
-  /// whether the border distance policy's `prepare()` step runs in a second thread while
-  /// the center is located (default: `true`). Results do not depend on it.
-  void use_concurrency(bool on) { m_concurrent = on; }
-  /// see `use_concurrency()`.
-  bool uses_concurrency() const { return m_concurrent; }
-
   /// the center locator.
   const Center_locator& center_locator() const { return m_center_locator; }
   /// the border distance policy.
@@ -326,7 +318,6 @@ private:
   Center_locator m_center_locator;
   Border_distance m_border_distance;
   std::shared_ptr<Record> m_record;
-  bool m_concurrent = true;
 };
 
 } // namespace Surface_mesh_parameterization

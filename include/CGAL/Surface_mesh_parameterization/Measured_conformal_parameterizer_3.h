@@ -21,6 +21,7 @@
 
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Default.h>
+#include <CGAL/tags.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -81,10 +82,13 @@ namespace Surface_mesh_parameterization {
 ///         (factorization of symmetric positive definite matrices). %Default:
 ///         `Default_sparse_cholesky_traits` (Eigen's `SimplicialLDLT`); CHOLMOD's supernodal
 ///         Cholesky is available as `Cholmod_supernodal_cholesky_traits`.
+/// \tparam ConcurrencyTag_ `CGAL::Sequential_tag` (default) or `CGAL::Parallel_tag`; see
+///         `Measured_border_parameterizer_3`.
 template <class TriangleMesh_,
           class CenterLocator_ = Poisson_center_locator<TriangleMesh_>,
           class BorderDistance_ = Poisson_border_distance<TriangleMesh_>,
-          class SolverTraits_ = Default>
+          class SolverTraits_ = Default,
+          class ConcurrencyTag_ = CGAL::Sequential_tag>
 class Measured_conformal_parameterizer_3
 {
 public:
@@ -93,8 +97,8 @@ public:
   /// Triangle mesh type (CGAL's name in its parameterizers)
   typedef TriangleMesh_                                                         TriangleMesh;
   /// The border step, which also holds the policies.
-  typedef Measured_border_parameterizer_3<TriangleMesh_, CenterLocator_,
-                                          BorderDistance_, SolverTraits_>       Border_parameterizer;
+  typedef Measured_border_parameterizer_3<TriangleMesh_, CenterLocator_, BorderDistance_,
+                                          SolverTraits_, ConcurrencyTag_>      Border_parameterizer;
   /// Center locator type (`CenterLocator_`, or the default)
   typedef typename Border_parameterizer::Center_locator                         Center_locator;
   /// Border distance type (`BorderDistance_`, or the default)
@@ -263,6 +267,7 @@ public:
     report.border_choice = m_border_choice;
     Patch patch;
     Error_code status = patch.build_disk(mesh, bhd, get(vertex_point, mesh));
+    patch.set_parallel(internal::Is_parallel<ConcurrencyTag_>::value);
     report.preparation_seconds = clock.lap();
     if(status == OK)
     {
@@ -317,11 +322,6 @@ public:
   void set_repair(Repair repair) { m_repair = repair; }
   /// see `set_repair()`.
   Repair repair() const { return m_repair; }
-
-  /// whether center-independent work runs in a second thread while the center is located
-  /// (default: `true`; see `Measured_border_parameterizer_3::use_concurrency()`). Results do
-  /// not depend on it.
-  void use_concurrency(bool on) { m_border.use_concurrency(on); }
 
   /// the record of the last call.
   const Report& last_report() const { return *m_report; }

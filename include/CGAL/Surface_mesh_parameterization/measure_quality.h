@@ -36,6 +36,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -112,6 +113,32 @@ inline double corner_angle_2(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
   return std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
 }
 
+// Per vertex: the sum of its 3D corner angles beta, and of d = alpha / beta - 1 and d^2 over
+// its corners (count: those with beta > 0), so that the paper's angle error
+// sum ((alpha - phi) / phi)^2, with phi = c beta (c = 2 pi / sum beta at interior vertices,
+// 1 at border vertices), is [sum d^2 - 2 (c - 1) sum d + count (c - 1)^2] / c^2, known once
+// every corner was seen. (Centered at 1: no cancellation for nearly flat, nearly conformal
+// maps, whose error is then exact to rounding.)
+struct Vertex_angles
+{
+  double beta = 0., d = 0., d2 = 0.;
+  int corners = 0, count = 0;
+  bool border = false;
+};
+
+// The binary exponent of the largest finite coordinate of three points (0 when none is
+// nonzero and finite).
+template <class Point>
+int largest_exponent(const std::array<Point, 3>& points)
+{
+  double largest = 0.;
+  for(const Point& x : points)
+    for(Eigen::Index c = 0; c < x.size(); ++c)
+      if(std::isfinite(x[c]))
+        largest = (std::max)(largest, std::abs(x[c]));
+  return (largest > 0.) ? std::ilogb(largest) : 0;
+}
+
 template <class TriangleMesh, class FaceRange, class VertexUVMap, class NamedParameters, class FaceVisitor>
 Parameterization_quality measure_quality(const TriangleMesh& tm,
                                          const FaceRange& face_range,
@@ -122,128 +149,169 @@ Parameterization_quality measure_quality(const TriangleMesh& tm,
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor   vertex_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor     face_descriptor;
-  typedef typename boost::property_map<TriangleMesh, CGAL::dynamic_vertex_property_t<double> >::const_type Angle_map;
+  constexpr bool per_face = !std::is_same<FaceVisitor, No_face_visitor>::value;
 
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(vertex_point, tm));
   const double inf = std::numeric_limits<double>::infinity();
+  auto angles = get(CGAL::dynamic_vertex_property_t<Vertex_angles>(), tm);
+  for(face_descriptor f : face_range)
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
+      put(angles, target(h, tm), Vertex_angles());
 
-  struct Corners
+  // What the per-face figures still need once the faces are seen: the 3D area and the log of
+  // the area ratio (for the global area normalization), and, with a face visitor, the face,
+  // its vertices and r of each corner.
+  struct Face_record
+  {
+    double area, log_ratio;
+  };
+  struct Visited_face
+  {
+    face_descriptor f;
+    std::array<vertex_descriptor, 3> v;
+    std::array<double, 3> r;
+    Face_quality fq;
+  };
+  std::vector<Face_record> records;
+  std::vector<Visited_face> visited;
+
+  // The one pass over the faces. Positions and UVs are divided by powers of two (exact) that
+  // bring the first face's largest coordinates into [1, 2): the figures are invariant under
+  // scaling, and squared lengths neither underflow nor overflow at extreme scales.
+  bool scaled = false;
+  int exponent3 = 0, exponent2 = 0;
+  Parameterization_quality q;
+  double area3 = 0., area_uv = 0., angle_sum_corner = 0., qc_sum = 0., l2_sum = 0., max_G = 0.;
+  for(face_descriptor f : face_range)
   {
     std::array<vertex_descriptor, 3> v;
+    v.fill(boost::graph_traits<TriangleMesh>::null_vertex());
     std::array<Eigen::Vector3d, 3> p;
-    std::array<Eigen::Vector2d, 3> q;
-  };
-  auto corners_of = [&](face_descriptor f) {
-    Corners c;
+    p.fill(Eigen::Vector3d::Zero());
+    std::array<Eigen::Vector2d, 3> uv;
+    uv.fill(Eigen::Vector2d::Zero());
     int k = 0;
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
     {
       if(k == 3)
         break;
-      c.v[k] = target(h, tm);
-      const auto& p = get(vpm, c.v[k]);
-      c.p[k] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-      const auto& q = get(uvmap, c.v[k]);
-      c.q[k] = Eigen::Vector2d(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+      v[k] = target(h, tm);
+      const auto& x = get(vpm, v[k]);
+      p[k] = Eigen::Vector3d(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
+      const auto& y = get(uvmap, v[k]);
+      uv[k] = Eigen::Vector2d(CGAL::to_double(y.x()), CGAL::to_double(y.y()));
+      if(is_border(opposite(h, tm), tm))  // the edge into v[k] is on a border
+        for(vertex_descriptor b : {v[k], source(h, tm)})
+        {
+          Vertex_angles a = get(angles, b);
+          a.border = true;
+          put(angles, b, a);
+        }
       ++k;
     }
-    return c;
-  };
-
-  // Pass 1: 3D angle sums per vertex (a value < 0 marks "not seen yet"), total areas.
-  Angle_map angle_sum = get(CGAL::dynamic_vertex_property_t<double>(), tm);
-  for(face_descriptor f : face_range)
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
-      put(angle_sum, target(h, tm), -1.);
-
-  Parameterization_quality q;
-  double area3 = 0., area_uv = 0.;
-  for(face_descriptor f : face_range)
-  {
-    const Corners c = corners_of(f);
-    ++q.number_of_faces;
-    for(int k = 0; k < 3; ++k)
+    if(!scaled)
     {
-      double s = get(angle_sum, c.v[k]);
-      if(s < 0.)
-      {
-        s = 0.;
-        ++q.number_of_vertices;
-      }
-      put(angle_sum, c.v[k], s + internal::corner_angle_3(c.p[(k + 1) % 3] - c.p[k], c.p[(k + 2) % 3] - c.p[k]));
+      exponent3 = largest_exponent(p);
+      exponent2 = largest_exponent(uv);
+      scaled = true;
     }
-    area3 += 0.5 * (c.p[1] - c.p[0]).cross(c.p[2] - c.p[0]).norm();
-    const Eigen::Vector2d e1 = c.q[1] - c.q[0], e2 = c.q[2] - c.q[0];
-    area_uv += 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+    for(int c = 0; c < 3; ++c)
+    {
+      p[c] = Eigen::Vector3d(std::ldexp(p[c].x(), -exponent3), std::ldexp(p[c].y(), -exponent3),
+                             std::ldexp(p[c].z(), -exponent3));
+      uv[c] = Eigen::Vector2d(std::ldexp(uv[c].x(), -exponent2), std::ldexp(uv[c].y(), -exponent2));
+    }
+    ++q.number_of_faces;
+    Visited_face vf;
+    vf.f = f;
+    vf.v = v;
+    for(int c = 0; c < 3; ++c)
+    {
+      const double beta = corner_angle_3(p[(c + 1) % 3] - p[c], p[(c + 2) % 3] - p[c]);
+      const double alpha = corner_angle_2(uv[(c + 1) % 3] - uv[c], uv[(c + 2) % 3] - uv[c]);
+      Vertex_angles a = get(angles, v[c]);
+      if(a.corners++ == 0)
+        ++q.number_of_vertices;
+      a.beta += beta;
+      vf.r[c] = (beta > 0.) ? alpha / beta : 0.;
+      if(beta > 0.)
+      {
+        const double d = vf.r[c] - 1.;
+        a.d += d;
+        a.d2 += d * d;
+        ++a.count;
+        angle_sum_corner += d * d;
+      }
+      put(angles, v[c], a);
+    }
+    const Eigen::Vector3d e = p[1] - p[0], g = p[2] - p[0];
+    const double la = e.norm(), A3 = 0.5 * e.cross(g).norm();
+    const Eigen::Vector2d e1 = uv[1] - uv[0], e2 = uv[2] - uv[0];
+    const double signed_uv = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
+    area3 += A3;
+    area_uv += std::abs(signed_uv);
+    if(!(signed_uv > 0.))
+      ++q.flipped_faces;
+    vf.fq.uv_area = signed_uv;
+    vf.fq.quasi_conformal = inf;
+    if(A3 > 0. && la > 0.)  // otherwise a degenerate 3D face: no Jacobian, no weight
+    {
+      // Jacobian of 3D -> UV in an orthonormal frame of the 3D triangle: J = Q P^-1 with
+      // P = [[la, bx], [0, by]]; its singular values without cancellation near s1 = s2:
+      // s1,2 = (|(j00 + j11, j10 - j01)| +- |(j00 - j11, j10 + j01)|) / 2
+      const double bx = e.dot(g) / la, by = 2. * A3 / la;
+      const double j00 = e1.x() / la, j10 = e1.y() / la;
+      const double j01 = (e2.x() - j00 * bx) / by, j11 = (e2.y() - j10 * bx) / by;
+      const double pp = std::hypot(j00 + j11, j10 - j01), rr = std::hypot(j00 - j11, j10 + j01);
+      const double s1 = 0.5 * (pp + rr), s2 = 0.5 * std::abs(pp - rr);
+      const double qc = (s2 > 0.) ? s1 / s2 : inf;
+      const double G = (s2 > 0.) ? 1. / s2 : inf, gg = (s1 > 0.) ? 1. / s1 : inf;
+      vf.fq.quasi_conformal = qc;
+      qc_sum += A3 * qc;
+      q.quasi_conformal_max = (std::max)(q.quasi_conformal_max, qc);
+      l2_sum += A3 * 0.5 * (G * G + gg * gg);
+      max_G = (std::max)(max_G, G);
+      records.push_back({A3, (signed_uv != 0.) ? std::log(std::abs(signed_uv) / A3) : -inf});
+    }
+    if constexpr(per_face)
+      visited.push_back(vf);
   }
   if(q.number_of_faces == 0)
     return q;
 
-  // Pass 2: per-face figures.
-  const double uv_scale2 = (area_uv > 0.) ? area3 / area_uv : inf;  // UV area -> 3D area scale
-  double angle_sum_paper = 0., angle_sum_corner = 0., qc_sum = 0., l2_sum = 0., area_log_sum = 0.;
-  double max_G = 0.;
-  for(face_descriptor f : face_range)
+  // The angle error, per vertex.
+  auto scale_of = [](const Vertex_angles& a) {  // c: optimal angle = c * 3D angle
+    return (!a.border && a.beta > 0.) ? 2. * CGAL_PI / a.beta : 1.;
+  };
+  double angle_sum_paper = 0.;
+  for(vertex_descriptor vd : vertices(tm))
   {
-    const Corners c = corners_of(f);
-    Face_quality fq;
-    for(int k = 0; k < 3; ++k)
-    {
-      const double beta = internal::corner_angle_3(c.p[(k + 1) % 3] - c.p[k], c.p[(k + 2) % 3] - c.p[k]);
-      const double alpha = internal::corner_angle_2(c.q[(k + 1) % 3] - c.q[k], c.q[(k + 2) % 3] - c.q[k]);
-      double phi = beta;
-      const double sum = get(angle_sum, c.v[k]);
-      if(!CGAL::is_border(c.v[k], tm) && sum > 0.)
-        phi *= 2. * CGAL_PI / sum;
-      if(phi > 0.)
-      {
-        const double e = ((alpha - phi) / phi) * ((alpha - phi) / phi);
-        angle_sum_paper += e;
-        fq.angle_distortion += e / 3.;
-      }
-      if(beta > 0.)
-        angle_sum_corner += ((alpha - beta) / beta) * ((alpha - beta) / beta);
-    }
-
-    // Jacobian of 3D -> UV in an orthonormal frame of the 3D triangle.
-    const Eigen::Vector3d a = c.p[1] - c.p[0], b = c.p[2] - c.p[0];
-    const double la = a.norm();
-    const double A3 = 0.5 * a.cross(b).norm();
-    const Eigen::Vector2d e1 = c.q[1] - c.q[0], e2 = c.q[2] - c.q[0];
-    const double signed_uv = 0.5 * (e1.x() * e2.y() - e1.y() * e2.x());
-    if(!(signed_uv > 0.))
-      ++q.flipped_faces;
-    fq.uv_area = signed_uv;
-    if(!(A3 > 0.) || !(la > 0.))
-    {
-      fq.quasi_conformal = std::numeric_limits<double>::infinity();
-      visit(f, fq);
-      continue;  // degenerate 3D face: no Jacobian, no weight
-    }
-    const double bx = a.dot(b) / la, by = 2. * A3 / la;        // P = [[la, bx], [0, by]]
-    // J = Q P^{-1}, P^{-1} = [[1/la, -bx/(la by)], [0, 1/by]]
-    const double j00 = e1.x() / la, j10 = e1.y() / la;
-    const double j01 = (e2.x() - j00 * bx) / by, j11 = (e2.y() - j10 * bx) / by;
-    // singular values of [[j00, j01], [j10, j11]] without cancellation near s1 = s2:
-    // s1,2 = (|(j00 + j11, j10 - j01)| +- |(j00 - j11, j10 + j01)|) / 2
-    const double p = std::hypot(j00 + j11, j10 - j01), r = std::hypot(j00 - j11, j10 + j01);
-    const double s1 = 0.5 * (p + r);
-    const double s2 = 0.5 * std::abs(p - r);
-    const double qc = (s2 > 0.) ? s1 / s2 : inf;
-    fq.quasi_conformal = qc;
-    visit(f, fq);
-    const double G = (s2 > 0.) ? 1. / s2 : inf;
-    const double g = (s1 > 0.) ? 1. / s1 : inf;
-    qc_sum += A3 * qc;
-    q.quasi_conformal_max = (std::max)(q.quasi_conformal_max, qc);
-    l2_sum += A3 * 0.5 * (G * G + g * g);
-    max_G = (std::max)(max_G, G);
-    const double ratio = std::abs(signed_uv) * uv_scale2 / A3;
-    const double log_ratio = (ratio > 0.) ? std::abs(std::log(ratio)) : inf;
-    area_log_sum += A3 * log_ratio;
-    q.area_distortion_max = (std::max)(q.area_distortion_max, log_ratio);
+    const Vertex_angles& a = get(angles, vd);
+    if(a.corners == 0)
+      continue;
+    const double c = scale_of(a), s = c - 1.;
+    angle_sum_paper += (std::max)(0., (a.d2 - 2. * s * a.d + double(a.count) * s * s) / (c * c));
   }
+  // The area distortion, after scaling the UV areas to the 3D total.
+  const double log_scale = (area_uv > 0.) ? std::log(area3 / area_uv) : inf;
+  double area_log_sum = 0.;
+  for(const Face_record& r : records)
+  {
+    const double d = std::abs(r.log_ratio + log_scale);
+    area_log_sum += r.area * d;
+    q.area_distortion_max = (std::max)(q.area_distortion_max, d);
+  }
+  if constexpr(per_face)
+    for(Visited_face& vf : visited)
+    {
+      for(int c = 0; c < 3; ++c)
+      {
+        const double x = vf.r[c] / scale_of(get(angles, vf.v[c])) - 1.;
+        vf.fq.angle_distortion += (vf.r[c] > 0. ? x * x : 0.) / 3.;
+      }
+      visit(vf.f, vf.fq);
+    }
 
   q.angle_distortion = angle_sum_paper / double(q.number_of_vertices);
   q.angle_distortion_per_corner = angle_sum_corner / double(3 * q.number_of_faces);

@@ -98,7 +98,7 @@ Error_code boundary_poisson_distance_map(
   if(status != OK)
     return status;
   for(std::size_t i = 0; i < patch.number_of_real_vertices(); ++i)
-    put(distance_map, patch.vertex(i), FT(values[i]));
+    put(distance_map, patch.vertex(i), FT(values[i] * patch.length_unit()));
   return OK;
 }
 

@@ -25,7 +25,7 @@
 // A candidate is a border and an interior: the discrete conformal map (two back-substitutions
 // of the shared factorization of L_II; candidates are solved in batches, one multi-column
 // solve per batch) or the mean value map (positive weights: one-to-one for a convex border,
-// by Floater's theorem; one sparse LU factorization made on first use). The evaluator records
+// by Floater's theorem; the patch's mean value system, factorized on first use). The evaluator records
 // every candidate and keeps the valid one of lowest angle distortion.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
@@ -161,7 +161,7 @@ public:
     std::vector<bool> placed(batch.size());
     for(std::size_t i = 0; i < batch.size(); ++i)
       placed[i] = m_family.border(batch[i].first, batch[i].second, solutions[i].border_uv);
-    const bool solved = mean_value ? solve_mean_value(placed, solutions) : solve_conformal(placed, solutions);
+    const bool solved = solve(placed, solutions, mean_value);
     std::vector<Border_trial> result;
     std::vector<Eigen::Vector2d> uv;
     for(std::size_t i = 0; i < batch.size(); ++i)
@@ -200,8 +200,13 @@ public:
   const Angle_distortion_objective& objective() const { return m_objective; }
 
 private:
-  bool solve_conformal(const std::vector<bool>& placed, std::vector<Border_solution>& solutions)
+  // Every placed border's interior, with one multi-column solve of the interior system
+  // (cotangent weights) or of the mean value system.
+  bool solve(const std::vector<bool>& placed, std::vector<Border_solution>& solutions, bool mean_value)
   {
+    typename Patch::Engine* system = mean_value ? m_patch.mean_value_system() : m_patch.interior_system();
+    if(system == nullptr)
+      return false;
     const Eigen::Index m = static_cast<Eigen::Index>(m_patch.border().size());
     Eigen::MatrixXd values = Eigen::MatrixXd::Zero(m, 2 * static_cast<Eigen::Index>(solutions.size()));
     for(std::size_t i = 0; i < solutions.size(); ++i)
@@ -212,8 +217,8 @@ private:
           values(k, 2 * static_cast<Eigen::Index>(i) + 1) = solutions[i].border_uv[static_cast<std::size_t>(k)].y();
         }
     Eigen::MatrixXd rhs, x;
-    m_patch.interior_rhs_from_border(values, rhs);
-    if(m_patch.solve_interior(rhs, x) != OK)
+    system->rhs_from_fixed(values, rhs);
+    if(system->solve(rhs, x) != OK)
       return false;
     for(std::size_t i = 0; i < solutions.size(); ++i)
     {
@@ -224,25 +229,9 @@ private:
     return true;
   }
 
-  bool solve_mean_value(const std::vector<bool>& placed, std::vector<Border_solution>& solutions)
-  {
-    if(!m_mean_value_factored)
-    {
-      if(m_mean_value.factor(m_patch) != OK)
-        return false;
-      m_mean_value_factored = true;
-    }
-    for(std::size_t i = 0; i < solutions.size(); ++i)
-      if(placed[i] && m_mean_value.solve(m_patch, solutions[i].border_uv, solutions[i].u, solutions[i].v) != OK)
-        return false;
-    return true;
-  }
-
   Patch& m_patch;
   const Border_family<Patch>& m_family;
   Angle_distortion_objective m_objective;
-  Mean_value_interior m_mean_value;
-  bool m_mean_value_factored = false;
   std::vector<Border_trial> m_trials;
   int m_best = -1;
   Border_solution m_best_solution;

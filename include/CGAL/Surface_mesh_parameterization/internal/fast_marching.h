@@ -263,6 +263,15 @@ private:
     return eb.y() > 0. && std::isfinite(eb.x()) && std::isfinite(eb.y());
   }
 
+  // Whether the corner at C of the frame (ea, eb) is obtuse. A right angle (a grid's corner)
+  // is not: the relative tolerance keeps the choice of branch, and the values, independent of
+  // the rounding of a rigid motion.
+  static bool is_obtuse(const Vector_2& eb)
+  {
+    return eb.x() < -obtuse_tolerance() * eb.norm();
+  }
+  static constexpr double obtuse_tolerance() { return 1e-9; }
+
   // The value of vertex C = corner kc of face f from the accepted vertices of that face (and,
   // for an obtuse corner, from its split vertex).
   double update(std::size_t f, int kc, const std::vector<double>& T,
@@ -284,7 +293,7 @@ private:
     Vector_2 ea, eb;
     if(!frame(f, kc, ea, eb))  // degenerate: edge updates only
       return best;
-    if(eb.x() >= 0.)  // angle at C not obtuse
+    if(!is_obtuse(eb))
     {
       if(known_a && known_b)
         best = (std::min)(best, plane_wave(ea, eb, T[va], T[vb]));
@@ -321,7 +330,7 @@ private:
       for(int k = 0; k < 3; ++k)
       {
         Vector_2 ea, eb;
-        if(!frame(f, k, ea, eb) || !(eb.x() < 0.))
+        if(!frame(f, k, ea, eb) || !is_obtuse(eb))
           continue;
         ++m_obtuse_corners;
         Split split = {static_cast<int>(f), k, -1, Vector_2::Zero()};

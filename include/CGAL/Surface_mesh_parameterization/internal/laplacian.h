@@ -10,14 +10,19 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_LAPLACIAN_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_LAPLACIAN_H
 
-// Edge weights and Laplacian assembly over an indexed triangle set (METHOD.md section 2).
+// Edge weights and the one Laplacian assembly over an indexed triangle set (METHOD.md
+// section 2).
 //
-// Faces are triples of local vertex indices. The weight of "corner k of face f" is the
-// contribution of face f to the edge opposite corner k, i.e. the edge between
-// faces[f][(k+1)%3] and faces[f][(k+2)%3]; an edge's weight is the sum over its (one or two)
-// faces. The unnormalised Laplacian is L = D - W with D_ii = sum_j w_ij.
-
-#include <CGAL/Surface_mesh_parameterization/internal/sparse_solver.h>
+// Faces are triples of local vertex indices. A weight policy gives, for a face f and two of
+// its corners a != b, the weight `w(f, a, b)` that face f contributes to the directed edge
+// from vertex faces[f][a] to vertex faces[f][b]; an edge's weight is the sum over its (one or
+// two) faces. Row i of the Laplacian is  (L x)_i = sum_j w_ij (x_i - x_j), i.e. L = D - W with
+// D_ii = sum_j w_ij. A policy with `symmetric == true` has w(f, a, b) = w(f, b, a), so L is
+// symmetric (positive semi-definite for positive or cotangent weights).
+//
+// Policies: cotangent weights (cot of the opposite angle / 2 per face), spring weights
+// |x_i - x_j|^-r (the paper's Poisson distance map), mean value weights
+// tan(angle at i / 2) / |x_i - x_j| (Floater 2003; not symmetric).
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -33,37 +38,6 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 
 typedef std::array<int, 3> Face_indices;
-
-// Emits the triplets of L restricted to the unknowns: `unknown[i]` is the row of vertex i,
-// or -1 for a constrained vertex. Constrained neighbours still count in the diagonal.
-template <class CornerWeight>
-void laplacian_triplets(const std::vector<Face_indices>& faces,
-                        const std::vector<int>& unknown,
-                        const CornerWeight& weight,
-                        std::vector<Triplet>& triplets)
-{
-  triplets.clear();
-  triplets.reserve(faces.size() * 9);
-  for(std::size_t f = 0; f < faces.size(); ++f)
-  {
-    for(int k = 0; k < 3; ++k)
-    {
-      const int a = faces[f][(k + 1) % 3], b = faces[f][(k + 2) % 3];
-      const double w = weight(f, k);
-      const int ia = unknown[static_cast<std::size_t>(a)];
-      const int ib = unknown[static_cast<std::size_t>(b)];
-      if(ia >= 0)
-        triplets.emplace_back(ia, ia, w);
-      if(ib >= 0)
-        triplets.emplace_back(ib, ib, w);
-      if(ia >= 0 && ib >= 0)
-      {
-        triplets.emplace_back(ia, ib, -w);
-        triplets.emplace_back(ib, ia, -w);
-      }
-    }
-  }
-}
 
 // The sparsity pattern of the vertex graph (every vertex with itself and its neighbours,
 // sorted), built once per patch. It assembles the Laplacian restricted to a set of unknowns
@@ -117,11 +91,12 @@ public:
   std::size_t size() const { return m_offsets.empty() ? 0 : m_offsets.size() - 1; }
 
   // The Laplacian L = D - W restricted to the unknowns (`unknown[i]` = row of vertex i, or -1;
-  // rows must increase with i), with the weights given per face corner as for
-  // laplacian_triplets(). `M` becomes m x m, compressed, both triangles stored.
-  template <class CornerWeight>
+  // rows must increase with i), with the weights of the policy `weight` (see the top of this
+  // file). `M` becomes m x m, compressed, both triangles stored; the weights from unknowns to
+  // constrained vertices go through `coupling(row, vertex, w)`.
+  template <class Weight, class Coupling>
   void assemble(const std::vector<Face_indices>& faces, const std::vector<int>& unknown, int m,
-                const CornerWeight& weight, Eigen::SparseMatrix<double>& M) const
+                const Weight& weight, Eigen::SparseMatrix<double>& M, const Coupling& coupling) const
   {
     std::vector<double> values(m_neighbors.size(), 0.);
     auto slot = [this](int a, int b) {  // position of b among the neighbours of a
@@ -130,15 +105,21 @@ public:
       return static_cast<std::size_t>(std::lower_bound(first, last, b) - m_neighbors.data());
     };
     for(std::size_t f = 0; f < faces.size(); ++f)
-      for(int k = 0; k < 3; ++k)
+      for(int a = 0; a < 3; ++a)
       {
-        const int a = faces[f][static_cast<std::size_t>((k + 1) % 3)];
-        const int b = faces[f][static_cast<std::size_t>((k + 2) % 3)];
-        const double w = weight(f, k);
-        values[slot(a, b)] -= w;
-        values[slot(b, a)] -= w;
-        values[slot(a, a)] += w;
-        values[slot(b, b)] += w;
+        const int i = faces[f][static_cast<std::size_t>(a)];
+        if(unknown[static_cast<std::size_t>(i)] < 0)
+          continue;
+        for(int b : {(a + 1) % 3, (a + 2) % 3})
+        {
+          const int j = faces[f][static_cast<std::size_t>(b)];
+          const double w = weight(f, a, b);
+          values[slot(i, i)] += w;
+          if(unknown[static_cast<std::size_t>(j)] >= 0)
+            values[slot(i, j)] -= w;
+          else
+            coupling(unknown[static_cast<std::size_t>(i)], j, w);
+        }
       }
     std::size_t nnz = 0;
     for(std::size_t i = 0; i < size(); ++i)
@@ -170,6 +151,18 @@ public:
       }
       outer[++column] = static_cast<int>(p);
     }
+    // column i holds the neighbours' entries of row i: that is the transpose of L, which is
+    // L itself for symmetric weights
+    if constexpr(!Weight::symmetric)
+      M = Eigen::SparseMatrix<double>(M.transpose());
+  }
+
+  // the same without constrained neighbours to report
+  template <class Weight>
+  void assemble(const std::vector<Face_indices>& faces, const std::vector<int>& unknown, int m,
+                const Weight& weight, Eigen::SparseMatrix<double>& M) const
+  {
+    assemble(faces, unknown, m, weight, M, [](int, int, double) {});
   }
 
 private:
@@ -178,20 +171,17 @@ private:
 };
 
 // d_i = sum_j w_ij over all neighbours.
-template <class CornerWeight>
+template <class Weight>
 void laplacian_row_sums(const std::vector<Face_indices>& faces,
                         std::size_t number_of_vertices,
-                        const CornerWeight& weight,
+                        const Weight& weight,
                         std::vector<double>& row_sums)
 {
   row_sums.assign(number_of_vertices, 0.);
   for(std::size_t f = 0; f < faces.size(); ++f)
-    for(int k = 0; k < 3; ++k)
-    {
-      const double w = weight(f, k);
-      row_sums[static_cast<std::size_t>(faces[f][(k + 1) % 3])] += w;
-      row_sums[static_cast<std::size_t>(faces[f][(k + 2) % 3])] += w;
-    }
+    for(int a = 0; a < 3; ++a)
+      row_sums[static_cast<std::size_t>(faces[f][static_cast<std::size_t>(a)])] +=
+        weight(f, a, (a + 1) % 3) + weight(f, a, (a + 2) % 3);
 }
 
 // Share of face f in the edge opposite corner k: 1 on a border edge (one face), 1/2 otherwise.
@@ -200,32 +190,53 @@ inline double edge_share(unsigned char single_edge_mask, int k)
   return ((single_edge_mask >> k) & 1) ? 1. : 0.5;
 }
 
-// Spring weight |x_a - x_b|^(-r) of the edge opposite each corner, counted once per edge.
+// Spring weight |x_a - x_b|^(-r), counted once per edge (half from each of its faces).
 struct Spring_weight
 {
+  static constexpr bool symmetric = true;
   const std::vector<Face_indices>* faces;
   const std::vector<Eigen::Vector3d>* points;
   const std::vector<unsigned char>* single_edges;
   double exponent;
 
-  double operator()(std::size_t f, int k) const
+  double operator()(std::size_t f, int a, int b) const
   {
     const Face_indices& t = (*faces)[f];
-    const double l = ((*points)[static_cast<std::size_t>(t[(k + 1) % 3])] -
-                      (*points)[static_cast<std::size_t>(t[(k + 2) % 3])]).norm();
+    const double l = ((*points)[static_cast<std::size_t>(t[static_cast<std::size_t>(a)])] -
+                      (*points)[static_cast<std::size_t>(t[static_cast<std::size_t>(b)])]).norm();
     // l > 0: faces were checked non-degenerate; exponent 0 gives uniform weights.
-    return std::pow(l, -exponent) * edge_share((*single_edges)[f], k);
+    return std::pow(l, -exponent) * edge_share((*single_edges)[f], 3 - a - b);
   }
 };
 
-// Cotangent weight: each face gives cot(angle at k) / 2 to the opposite edge.
+// Cotangent weight: each face gives cot(angle at the third corner) / 2 to the edge.
 struct Cotangent_weight
 {
+  static constexpr bool symmetric = true;
   const std::vector<std::array<double, 3> >* half_cotangents;
 
-  double operator()(std::size_t f, int k) const
+  double operator()(std::size_t f, int a, int b) const
   {
-    return (*half_cotangents)[f][static_cast<std::size_t>(k)];
+    return (*half_cotangents)[f][static_cast<std::size_t>(3 - a - b)];
+  }
+};
+
+// Mean value weight (Floater 2003): face f gives tan(alpha / 2) / |x_a - x_b| to the directed
+// edge a -> b, alpha its angle at a. Positive, not symmetric.
+struct Mean_value_weight
+{
+  static constexpr bool symmetric = false;
+  const std::vector<Face_indices>* faces;
+  const std::vector<Eigen::Vector3d>* points;
+
+  double operator()(std::size_t f, int a, int b) const
+  {
+    const Face_indices& t = (*faces)[f];
+    const Eigen::Vector3d& p = (*points)[static_cast<std::size_t>(t[static_cast<std::size_t>(a)])];
+    const Eigen::Vector3d u = (*points)[static_cast<std::size_t>(t[static_cast<std::size_t>(b)])] - p;
+    const Eigen::Vector3d v = (*points)[static_cast<std::size_t>(t[static_cast<std::size_t>(3 - a - b)])] - p;
+    const double alpha = std::atan2(u.cross(v).norm(), u.dot(v));
+    return std::tan(0.5 * alpha) / u.norm();  // |u| > 0: faces were checked non-degenerate
   }
 };
 

@@ -59,50 +59,26 @@ Error_code spring_poisson_distance(Patch& patch, const std::vector<int>& sources
   const std::size_t n = patch.number_of_vertices();
   if(sources.empty())
     return ERROR_WRONG_PARAMETER;
-  std::vector<int> unknown(n, 0);
-  for(int s : sources)
-  {
-    if(s < 0 || static_cast<std::size_t>(s) >= n)
-      return ERROR_WRONG_PARAMETER;
-    unknown[static_cast<std::size_t>(s)] = -1;
-  }
-  std::vector<int> rows;
-  for(std::size_t i = 0; i < n; ++i)
-    if(unknown[i] == 0)
-    {
-      unknown[i] = static_cast<int>(rows.size());
-      rows.push_back(static_cast<int>(i));
-    }
-
+  typename Patch::Engine engine;
+  const Spring_weight weight{&patch.faces_indices(), &patch.points(), &patch.single_edge_masks(), exponent};
+  Error_code status = engine.build(patch.pattern(), patch.faces_indices(), n, sources, weight);
   values.assign(n, 0.);
-  if(rows.empty())
-    return OK;
-
-  const Spring_weight weight{&patch.faces_indices(), &patch.points(),
-                             &patch.single_edge_masks(), exponent};
-  std::vector<double> d;
-  laplacian_row_sums(patch.faces_indices(), n, weight, d);
-  const std::vector<double>& g = patch.mean_spoke_lengths();
-
-  std::vector<Triplet> triplets;
-  laplacian_triplets(patch.faces_indices(), unknown, weight, triplets);
-  Factorized_system<typename Patch::Solver_traits> system;
-  Error_code status = system.factor(triplets, static_cast<int>(rows.size()));
-
-  std::vector<double> rhs(rows.size()), x;
-  for(std::size_t r = 0; r < rows.size(); ++r)
+  if(status == OK && engine.number_of_free_vertices() > 0)
   {
-    const std::size_t i = static_cast<std::size_t>(rows[r]);
-    rhs[r] = d[i] * g[i];
+    const std::vector<double>& d = engine.row_sums();
+    const std::vector<double>& g = patch.mean_spoke_lengths();
+    std::vector<double> rhs(engine.number_of_free_vertices()), x;
+    for(std::size_t r = 0; r < rhs.size(); ++r)
+    {
+      const std::size_t i = static_cast<std::size_t>(engine.free_vertices()[r]);
+      rhs[r] = d[i] * g[i];
+    }
+    status = engine.solve(rhs, x);
+    for(std::size_t r = 0; status == OK && r < x.size(); ++r)
+      values[static_cast<std::size_t>(engine.free_vertices()[r])] = x[r];
   }
-  if(status == OK)
-    status = system.solve(rhs, x);
-  patch.add_statistics(system.statistics());
-  if(status != OK)
-    return status;
-  for(std::size_t r = 0; r < rows.size(); ++r)
-    values[static_cast<std::size_t>(rows[r])] = x[r];
-  return OK;
+  patch.add_statistics(engine.statistics());
+  return status;
 }
 
 } // namespace internal

@@ -10,9 +10,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_REPAIR_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_REPAIR_H
 
-// Validity of a parameterization of a patch, and what the repair needs (METHOD.md section 4):
-// the one-to-one test, and the mean value coordinates interior solve (positive weights: with
-// a convex border the map is an embedding, by Floater's theorem).
+// Validity of a parameterization of a patch (METHOD.md section 4): the one-to-one test.
 //
 // The one-to-one test. Orient every border curve of the patch so that the faces are on its
 // left: the outer border counterclockwise, each hole clockwise. If every real face is
@@ -31,14 +29,11 @@
 #include <CGAL/number_type_config.h>
 
 #include <Eigen/Core>
-#include <Eigen/Sparse>
-#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
-#include <memory>
 #include <utility>
 #include <vector>
 
@@ -141,102 +136,6 @@ bool is_one_to_one(const Patch& patch, const std::vector<Eigen::Vector2d>& uv)
 {
   return count_flips(patch, uv) == 0 && border_curves_are_valid(patch, uv);
 }
-
-// r_k(t) = (1 - t) r_k + t * mean(r): t = 0 keeps the measured radii, t = 1 puts every border
-// vertex on one circle (at its measured polar angle), which makes the border convex.
-inline std::vector<double> blend_radii(const std::vector<double>& radii, double t)
-{
-  double mean = 0.;
-  for(double r : radii)
-    mean += r;
-  mean /= double(radii.size());
-  std::vector<double> blended(radii.size());
-  for(std::size_t k = 0; k < radii.size(); ++k)
-    blended[k] = (1. - t) * radii[k] + t * mean;
-  return blended;
-}
-
-// The interior of the mean value coordinates parameterization (Floater 2003) with a fixed
-// border: row i is sum_j w_ij (u_i - u_j) = 0, w_ij = (tan(a/2) + tan(b/2)) / |x_i - x_j|, a
-// and b the angles at i of the two faces of edge ij. The matrix is not symmetric: one sparse
-// LU factorization, then two back-substitutions per border.
-class Mean_value_interior
-{
-public:
-  template <class Patch>
-  Error_code factor(const Patch& patch)
-  {
-    const std::vector<std::array<int, 3> >& faces = patch.faces_indices();
-    const std::size_t n = patch.interior_vertices().size();
-    m_border_weights.clear();
-    std::vector<Triplet> triplets;
-    triplets.reserve(faces.size() * 9);
-    for(const std::array<int, 3>& t : faces)
-      for(int k = 0; k < 3; ++k)
-      {
-        const std::size_t i = static_cast<std::size_t>(t[static_cast<std::size_t>(k)]);
-        const int row = patch.interior_index(i);
-        if(row < 0)
-          continue;
-        const std::size_t j = static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)]);
-        const std::size_t l = static_cast<std::size_t>(t[static_cast<std::size_t>((k + 2) % 3)]);
-        const Eigen::Vector3d a = patch.point(j) - patch.point(i), b = patch.point(l) - patch.point(i);
-        const double la = a.norm(), lb = b.norm();
-        if(!(la > 0.) || !(lb > 0.))
-          return ERROR_DEGENERATE_FACE;
-        const double angle = std::atan2(a.cross(b).norm(), a.dot(b));
-        const double tan_half = std::tan(0.5 * angle);
-        for(const std::pair<std::size_t, double>& nb : {std::make_pair(j, tan_half / la), std::make_pair(l, tan_half / lb)})
-        {
-          triplets.emplace_back(row, row, nb.second);
-          const int col = patch.interior_index(nb.first);
-          if(col >= 0)
-            triplets.emplace_back(row, col, -nb.second);
-          else
-            m_border_weights.push_back({row, static_cast<int>(nb.first), nb.second});
-        }
-      }
-    Eigen::SparseMatrix<double> A(static_cast<int>(n), static_cast<int>(n));
-    A.setFromTriplets(triplets.begin(), triplets.end());
-    A.makeCompressed();
-    m_lu = std::make_unique<Eigen::SparseLU<Eigen::SparseMatrix<double> > >();
-    m_lu->compute(A);
-    return (m_lu->info() == Eigen::Success) ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-  }
-
-  // interior u, v for the border UVs (one per patch.border() entry)
-  template <class Patch>
-  Error_code solve(const Patch& patch, const std::vector<Eigen::Vector2d>& border_uv,
-                   std::vector<double>& u, std::vector<double>& v) const
-  {
-    std::vector<Eigen::Vector2d> at(patch.number_of_vertices(), Eigen::Vector2d::Zero());
-    for(std::size_t k = 0; k < border_uv.size(); ++k)
-      at[static_cast<std::size_t>(patch.border()[k])] = border_uv[k];
-    const Eigen::Index n = static_cast<Eigen::Index>(patch.interior_vertices().size());
-    Eigen::VectorXd bu = Eigen::VectorXd::Zero(n), bv = Eigen::VectorXd::Zero(n);
-    for(const Border_weight& w : m_border_weights)
-    {
-      bu[w.row] += w.weight * at[static_cast<std::size_t>(w.vertex)].x();
-      bv[w.row] += w.weight * at[static_cast<std::size_t>(w.vertex)].y();
-    }
-    const Eigen::VectorXd xu = m_lu->solve(bu), xv = m_lu->solve(bv);
-    if(m_lu->info() != Eigen::Success || !xu.allFinite() || !xv.allFinite())
-      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-    u.assign(xu.data(), xu.data() + n);
-    v.assign(xv.data(), xv.data() + n);
-    return OK;
-  }
-
-private:
-  struct Border_weight
-  {
-    int row;
-    int vertex;
-    double weight;
-  };
-  std::vector<Border_weight> m_border_weights;
-  std::unique_ptr<Eigen::SparseLU<Eigen::SparseMatrix<double> > > m_lu;
-};
 
 } // namespace internal
 } // namespace Surface_mesh_parameterization

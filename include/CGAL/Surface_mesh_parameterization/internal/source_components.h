@@ -90,8 +90,8 @@ Error_code distance_map_over_source_components(const TriangleMesh& tm,
     status = solve(patch, local_sources, values);
     if(status != OK)
       return status;
-    for(std::size_t i = 0; i < values.size(); ++i)
-      results.emplace_back(patch.vertex(i), values[i]);
+    for(std::size_t i = 0; i < values.size(); ++i)  // in the mesh's unit of length
+      results.emplace_back(patch.vertex(i), values[i] * patch.length_unit());
   }
   for(const auto& r : results)
     put(distance_map, r.first, FT(r.second));

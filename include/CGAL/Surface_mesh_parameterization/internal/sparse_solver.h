@@ -14,6 +14,7 @@
 // `SparseLinearAlgebraWithFactorTraits_d` concept (for example `CGAL::Eigen_solver_traits`).
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/concurrency.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Eigen_solver_traits.h>
@@ -44,8 +45,6 @@ typedef CGAL::Eigen_solver_traits<
 
 namespace internal {
 
-typedef Eigen::Triplet<double, int> Triplet;
-
 template <class SolverTraits>
 struct Get_solver_traits
 {
@@ -63,26 +62,6 @@ struct Wraps_eigen_sparse_matrix<Matrix,
   : std::is_same<std::decay_t<decltype(std::declval<Matrix&>().eigen_object())>,
                  Eigen::SparseMatrix<double> > {};
 
-// Fills `A` (n x n, zero) with the sum of the triplets, then releases the triplets' memory.
-template <class Matrix>
-void fill_matrix(Matrix& A, std::vector<Triplet>& triplets, int n)
-{
-  if constexpr(Wraps_eigen_sparse_matrix<Matrix>::value)
-  {
-    Eigen::SparseMatrix<double> M(n, n);
-    M.setFromTriplets(triplets.begin(), triplets.end());
-    std::vector<Triplet>().swap(triplets);
-    M.makeCompressed();
-    A.eigen_object().swap(M);
-  }
-  else
-  {
-    for(const Triplet& t : triplets)
-      A.add_coef(t.row(), t.col(), t.value());
-    std::vector<Triplet>().swap(triplets);
-  }
-}
-
 // Whether the traits are (or derive from) CGAL's Eigen_solver_traits, whose linear_solver(B, X)
 // uses only the factorization, not the matrix.
 template <class Traits, class = void>
@@ -91,6 +70,15 @@ struct Is_eigen_solver_traits : std::false_type {};
 template <class Traits>
 struct Is_eigen_solver_traits<Traits, std::void_t<typename Traits::Solver> >
   : std::is_base_of<CGAL::Eigen_solver_traits<typename Traits::Solver>, Traits> {};
+
+// Traits that solve many columns at once from their factor alone, with a member
+// `bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)` (Cholmod_supernodal_cholesky_traits).
+template <class Traits, class = void>
+struct Has_block_solve : std::false_type {};
+
+template <class Traits>
+struct Has_block_solve<Traits, std::void_t<decltype(std::declval<Traits&>().solve(
+  std::declval<const Eigen::MatrixXd&>(), std::declval<Eigen::MatrixXd&>()))> > : std::true_type {};
 
 // Eigen's SimplicialLDLT, whose factor can be read for a blocked multi-column solve.
 template <class Solver>
@@ -190,16 +178,10 @@ public:
   Factorized_system() = default;
 
   bool is_factorized() const { return m_factorized; }
+  // whether multi-column solves may use a second thread (CGAL's Parallel_tag)
+  void set_parallel(bool parallel) { m_parallel = parallel; }
   int size() const { return m_n; }
   const Solver_statistics& statistics() const { return m_stats; }
-
-  // Factorizes the n x n matrix given as triplets (duplicates are summed). Releases them.
-  Error_code factor(std::vector<Triplet>& triplets, int n)
-  {
-    m_matrix = std::make_unique<Matrix>(n, n);
-    fill_matrix(*m_matrix, triplets, n);
-    return factor_matrix(n);
-  }
 
   // Factorizes the compressed n x n matrix M (both triangles). Takes its storage.
   Error_code factor(Eigen::SparseMatrix<double>& M)
@@ -260,14 +242,15 @@ public:
     {
       if constexpr(Is_simplicial_ldlt<typename Solver_traits::Solver>::value)
       {
-        // many columns: two threads, each with half of them (the factor is only read)
+        // many columns, with Parallel_tag: two threads, each with half of them (the factor is
+        // only read)
         const Eigen::Index k = B.cols();
-        if(k >= 4 && m_n >= 10000)
+        if(m_parallel && k >= 4 && m_n >= 10000)
         {
           const Eigen::Index half = k / 2;
           Eigen::MatrixXd X2;
           const Eigen::MatrixXd B1 = B.leftCols(half), B2 = B.rightCols(k - half);
-          std::future<void> other = std::async(std::launch::async, [&] {
+          std::future<void> other = start_thread([&] {
             ldlt_block_solve(m_traits.solver(), B2, X2);
           });
           Eigen::MatrixXd X1;
@@ -284,6 +267,8 @@ public:
         X = m_traits.solver().solve(B);
       ok = (m_traits.solver().info() == Eigen::Success);
     }
+    else if constexpr(Has_block_solve<Solver_traits>::value)
+      ok = m_traits.solve(B, X);
     else
     {
       X.resize(B.rows(), B.cols());
@@ -313,9 +298,9 @@ private:
     const bool ok = m_traits.factor(*m_matrix, D);
     m_stats.factorization_seconds += std::chrono::duration<double>(Clock::now() - start).count();
     ++m_stats.factorizations;
-    // CGAL's Eigen_solver_traits solves from the factor alone: the matrix can go (a factor's
-    // worth of memory less, at the peak where both systems are alive)
-    if constexpr(Is_eigen_solver_traits<Solver_traits>::value)
+    // CGAL's Eigen_solver_traits and traits with a block solve work from the factor alone: the
+    // matrix can go
+    if constexpr(Is_eigen_solver_traits<Solver_traits>::value || Has_block_solve<Solver_traits>::value)
       m_matrix.reset();
     if(!ok || D != 1.)
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
@@ -327,6 +312,7 @@ private:
   std::unique_ptr<Matrix> m_matrix;
   int m_n = 0;
   bool m_factorized = false;
+  bool m_parallel = false;
   Solver_statistics m_stats;
 };
 

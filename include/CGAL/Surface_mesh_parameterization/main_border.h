@@ -1,0 +1,117 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_MAIN_BORDER_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_MAIN_BORDER_H
+
+/// \file main_border.h
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dynamic_property_map.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// the border loop to parameterize: a border halfedge of the longest border loop of `tm`,
+/// with its length (CGAL's `Polygon_mesh_processing::longest_border()` with a documented
+/// rule for ties, so that the choice does not depend on rounding).
+///
+/// Loops whose lengths differ by at most `1e-9` of the longer one are *tied*. A tie goes to
+/// the loop with more vertices, then to the loop that has the vertex coming first in
+/// `vertices(tm)` (the input's order). The choice is therefore the same for the mesh moved
+/// rigidly, mirrored, translated or scaled (every rule is invariant under them); only a
+/// renumbering of the vertices can change it, between loops that no rule based on the
+/// geometry could tell apart (an open tube with two equal ends, say).
+///
+/// The returned halfedge is the border halfedge whose source is that first vertex of the
+/// loop in `vertices(tm)` order, so the loop's starting vertex follows the same rule.
+///
+/// \tparam TriangleMesh a model of `FaceGraph`.
+/// \return the halfedge (`null_halfedge()` when `tm` has no border) and the loop's length.
+template <class TriangleMesh>
+std::pair<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor, double>
+main_border(const TriangleMesh& tm)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor   vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+
+  // the rank of every vertex in vertices(tm) order
+  auto rank = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  std::size_t r = 0;
+  for(vertex_descriptor v : vertices(tm))
+    put(rank, v, r++);
+
+  struct Loop
+  {
+    halfedge_descriptor first;  // the border halfedge whose source has the smallest rank
+    double length = 0.;
+    std::size_t size = 0, first_rank = 0;
+  };
+  auto seen = get(CGAL::dynamic_halfedge_property_t<bool>(), tm);
+  for(halfedge_descriptor h : halfedges(tm))
+    put(seen, h, false);
+  const auto vpm = get(CGAL::vertex_point, tm);
+  std::vector<Loop> loops;
+  for(halfedge_descriptor h : halfedges(tm))
+  {
+    if(!is_border(h, tm) || get(seen, h))
+      continue;
+    Loop loop;
+    loop.first = h;
+    loop.first_rank = get(rank, source(h, tm));
+    for(halfedge_descriptor b : halfedges_around_face(h, tm))
+    {
+      put(seen, b, true);
+      const auto& p = get(vpm, source(b, tm));
+      const auto& q = get(vpm, target(b, tm));
+      const double dx = CGAL::to_double(q.x()) - CGAL::to_double(p.x());
+      const double dy = CGAL::to_double(q.y()) - CGAL::to_double(p.y());
+      const double dz = CGAL::to_double(q.z()) - CGAL::to_double(p.z());
+      // hypot-like, so that no square underflows or overflows at extreme scales
+      const double m = (std::max)({std::abs(dx), std::abs(dy), std::abs(dz)});
+      loop.length += (m > 0.) ? m * std::sqrt((dx / m) * (dx / m) + (dy / m) * (dy / m) + (dz / m) * (dz / m)) : 0.;
+      ++loop.size;
+      if(get(rank, source(b, tm)) < loop.first_rank)
+      {
+        loop.first_rank = get(rank, source(b, tm));
+        loop.first = b;
+      }
+    }
+    loops.push_back(loop);
+  }
+  if(loops.empty())
+    return {boost::graph_traits<TriangleMesh>::null_halfedge(), 0.};
+  const Loop* best = &loops.front();
+  for(const Loop& l : loops)
+  {
+    const double longer = (std::max)(l.length, best->length);
+    const bool tied = std::abs(l.length - best->length) <= 1e-9 * longer;
+    if(tied ? (l.size > best->size || (l.size == best->size && l.first_rank < best->first_rank))
+            : l.length > best->length)
+      best = &l;
+  }
+  return {best->first, best->length};
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_MAIN_BORDER_H
