@@ -85,7 +85,8 @@ public:
   /// `ERROR_EMPTY_MESH` (no face), `ERROR_INVALID_BORDER_HALFEDGE` (null or not a border
   /// halfedge), `ERROR_NON_TRIANGULAR_MESH`, `ERROR_BORDER_TOO_SHORT` (fewer than 3 border
   /// vertices), `ERROR_NO_TOPOLOGICAL_DISC` (the loop visits a vertex twice, a vertex is
-  /// non-manifold, or the component has handles), `ERROR_NON_FINITE_COORDINATES`,
+  /// non-manifold: its faces do not form one fan, as at a pinched vertex where border loops
+  /// touch; or the component has handles), `ERROR_NON_FINITE_COORDINATES`,
   /// `ERROR_DEGENERATE_FACE`, `ERROR_NO_INTERIOR_VERTEX`. On failure the disk is empty.
   ///
   /// \tparam VertexPointMap a model of `ReadablePropertyMap` from `vertex_descriptor` to a
@@ -411,8 +412,16 @@ private:
     return OK;
   }
 
-  // A disk with holes: every vertex has a single umbrella and the Euler characteristic is
+  // A disk with holes: every vertex has a single umbrella (all its faces in this component,
+  // forming one fan: at most one border gap) and the Euler characteristic is
   // 2 - (number of border loops), i.e. genus 0.
+  //
+  // A pinched vertex (its faces form several fans, so that border loops touch there) is
+  // rejected. The halfedge structure pairs the border halfedges at such a vertex in an order
+  // set by the order in which the faces were added: the same surface can come as several loops
+  // that touch, or as one loop through the vertex several times. Rejecting every pinched
+  // vertex keeps the answer independent of that order; splitting the vertex
+  // (`Polygon_mesh_processing::duplicate_non_manifold_vertices()`) makes such a mesh a disk.
   Error_code check_disk_topology() const
   {
     const TriangleMesh& tm = *m_mesh;
@@ -422,11 +431,10 @@ private:
         ++corners[static_cast<std::size_t>(id)];
     for(std::size_t i = 0; i < m_vertices.size(); ++i)
     {
-      int around = 0;
+      int around = 0, gaps = 0;
       for(halfedge_descriptor h : halfedges_around_target(halfedge(m_vertices[i], tm), tm))
-        if(!is_border(h, tm))
-          ++around;
-      if(around != corners[i])
+        ++(is_border(h, tm) ? gaps : around);
+      if(around != corners[i] || gaps > 1)  // faces of another component, or a pinched vertex
         return ERROR_NO_TOPOLOGICAL_DISC;
     }
     long single_edges = 0;
