@@ -1,0 +1,14 @@
+# Copyright (c) 2026  The measured boundary parameterization authors.
+# All rights reserved.
+#
+# This file is part of the measured boundary parameterization package for CGAL.
+#
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# Author(s)     : The measured boundary parameterization authors
+#
+# A one-line mutant for scripts/mutation_check.sh (sed script).
+# file: include/CGAL/Surface_mesh_parameterization/internal/conformal_border.h
+# tests: test_conformal_border test_edges
+# breaks: conformal border: target turning angles k + h instead of k - h
+s/out.turning\[k\] = out.curvature\[k\] - out.correction\[k\];/out.turning[k] = out.curvature[k] + out.correction[k];/
