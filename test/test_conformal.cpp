@@ -444,7 +444,8 @@ MBP_TIERED_TEST_CASE(automatic_border_is_never_worse_than_its_members)
           BOOST_TEST((c.valid ? std::abs(c.objective - conformal) <= 1e-7 * conformal + 1e-15 : !std::isfinite(conformal)));
         }
       }
-      BOOST_TEST(members == 3);
+      // the measured member is built only when the conformal layout is not one-to-one
+      BOOST_TEST(members == (std::isfinite(conformal) ? 2 : 3));
       const Conformal::Border_candidate& kept =
         report.border_candidates[static_cast<std::size_t>(report.chosen_candidate)];
       BOOST_TEST(kept.objective == best);

@@ -278,7 +278,7 @@ public:
       if(status == OK)
       {
         internal::Border_evaluator<Patch> evaluator(patch, family);
-        status = choose(evaluator, report, clock);
+        status = choose(patch, family, evaluator, report, clock);
         if(status == OK)
           write_uv(patch, evaluator.best_solution(), uvmap, vpmap);
         report.output_seconds = clock.lap();
@@ -300,20 +300,24 @@ public:
   /// factorization of \f$ L_{II} \f$, each for two back-substitutions, a validity check and
   /// one evaluation of the angle distortion, and keeps the valid layout of lowest angle
   /// distortion. The search, deterministic:
-  /// 1. the members' own borders, in one batch: the circle, the measured border (the
-  ///    policies' center and distances; the spring Laplacian of the Poisson distance map is
-  ///    factorized only when the `BorderDistance` policy asks for it) and the conformal
-  ///    border;
-  /// 2. for each member whose own layout is not one-to-one but whose angle distortion (of
-  ///    the invalid layout) is lower than the best valid one so far, the smallest valid blend
-  ///    toward its convex border, by five bisection steps on \f$ (0, 1] \f$ (all such members
-  ///    in one batch per step); along a member the distortion grows as the border moves
-  ///    toward the convex one, so the smallest valid blend is the member's best;
-  /// 3. when no layout is valid, the repair (`Repair`).
+  /// 1. the circle and the conformal border (at its smallest simple blend toward the circle:
+  ///    0 unless the conformal polygon self-intersects), in one batch;
+  /// 2. only when the conformal layout is not one-to-one: the measured member (the policies'
+  ///    center and distances; the spring Laplacian of the Poisson distance map is factorized
+  ///    only when the `BorderDistance` policy asks for it). On the 23 real disks of the
+  ///    benchmark (`benchmark/README.md`) the measured member never had less angle distortion
+  ///    than a valid conformal layout, and building it costs a center search and a distance
+  ///    map;
+  /// 3. for each member whose own layout is not one-to-one but whose angle distortion (of the
+  ///    invalid layout) is lower than the best valid one so far, the smallest valid blend
+  ///    toward its convex border, by five bisection steps (all such members in one batch per
+  ///    step); along a member the distortion grows as the border moves toward the convex one,
+  ///    so the smallest valid blend is the member's best;
+  /// 4. when no layout is valid, the repair (`Repair`).
   ///
-  /// The circle is convex and the conformal border at blend 1 is convex, so the search
-  /// always has a simple, convex end point. `last_report().border_candidates` lists every
-  /// layout tried.
+  /// The circle is convex and the conformal border at blend 1 is convex, so the search always
+  /// has a simple, convex end point. `last_report().border_candidates` lists every layout
+  /// tried.
   void set_border_choice(Border_choice choice) { m_border_choice = choice; }
   /// see `set_border_choice()`.
   Border_choice border_choice() const { return m_border_choice; }
@@ -351,30 +355,16 @@ private:
     std::chrono::steady_clock::time_point m_start = std::chrono::steady_clock::now(), m_last = m_start;
   };
 
-  bool uses_measured() const { return m_border_choice == MEASURED_BORDER || m_border_choice == AUTOMATIC_BORDER; }
-  bool uses_conformal() const { return m_border_choice == CONFORMAL_BORDER || m_border_choice == AUTOMATIC_BORDER; }
-
-  // The members the border choice needs. For AUTOMATIC_BORDER a member that cannot be built
-  // (a distance policy that does not reach the border, say) is left out.
+  // The members the border choice needs before any layout is evaluated: the measured member
+  // for MEASURED_BORDER, the conformal one for CONFORMAL_BORDER and AUTOMATIC_BORDER (which
+  // builds its measured member later, only if needed). For AUTOMATIC_BORDER a member that
+  // cannot be built (a distance policy that does not reach the border, say) is left out.
   Error_code build_family(Patch& patch, internal::Border_family<Patch>& family, Report& report, Stopwatch& clock)
   {
-    if(uses_measured())
-    {
-      std::vector<Eigen::Vector2d> border_uv;
-      const Error_code status = m_border.parameterize_border(patch, border_uv, true);
-      const typename Border_parameterizer::Record& r = m_border.last_record();
-      report.center_seconds = r.center_seconds;
-      report.distance_seconds = r.distance_seconds;
-      report.border_map_seconds = r.border_map_seconds;
-      clock.lap();
-      if(status == OK)
-        family.add_measured(r.border_angles, r.border_distances);
-      else if(m_border_choice == MEASURED_BORDER || status == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM)
-        return status;
-    }
-    else
-      m_border.clear_record();
-    if(uses_conformal())
+    m_border.clear_record();
+    if(m_border_choice == MEASURED_BORDER)
+      return build_measured(patch, family, report, clock);
+    if(m_border_choice == CONFORMAL_BORDER || m_border_choice == AUTOMATIC_BORDER)
     {
       const Error_code status = family.add_conformal(patch);
       report.conformal_border_seconds = clock.lap();
@@ -384,25 +374,43 @@ private:
     return OK;
   }
 
+  // The measured member: center, distances, polar map (steps 1-3 of the paper).
+  Error_code build_measured(Patch& patch, internal::Border_family<Patch>& family, Report& report, Stopwatch& clock)
+  {
+    std::vector<Eigen::Vector2d> border_uv;
+    const Error_code status = m_border.parameterize_border(patch, border_uv, true);
+    const typename Border_parameterizer::Record& r = m_border.last_record();
+    report.center_seconds = r.center_seconds;
+    report.distance_seconds = r.distance_seconds;
+    report.border_map_seconds = r.border_map_seconds;
+    clock.lap();
+    if(status == OK)
+      family.add_measured(r.border_angles, r.border_distances);
+    return status;
+  }
+
   // Evaluates the border choice's candidates, then repairs if needed; the evaluator keeps the
   // result. Fills the report's border fields.
-  Error_code choose(internal::Border_evaluator<Patch>& evaluator, Report& report, Stopwatch& clock) const
+  Error_code choose(Patch& patch, internal::Border_family<Patch>& family, internal::Border_evaluator<Patch>& evaluator,
+                    Report& report, Stopwatch& clock)
   {
     std::vector<Member> members;  // the members that can be repaired, best first
+    Error_code status = OK;
     if(m_border_choice == AUTOMATIC_BORDER)
-      members = search_automatic(evaluator, report);
+      status = search_automatic(patch, family, evaluator, report, clock, members);
     else
     {
       const Member member = (m_border_choice == MEASURED_BORDER) ? internal::MEASURED_MEMBER
                           : (m_border_choice == CONFORMAL_BORDER) ? internal::CONFORMAL_MEMBER
                                                                   : internal::CIRCLE_MEMBER;
-      const internal::Border_trial trial =
-        evaluator.evaluate({{member, evaluator.family().own_blend(member)}}, false).front();
+      const internal::Border_trial trial = evaluator.evaluate({{member, family.own_blend(member)}}, false).front();
       report.valid_before_repair = trial.valid;
       report.flipped_faces_before_repair = trial.flipped_faces;
       members.push_back(member);
     }
-    report.interior_seconds = clock.lap();
+    if(status != OK)
+      return status;
+    report.interior_seconds += clock.lap();
     const std::size_t tried = evaluator.trials().size();
     if(evaluator.best() < 0 && m_repair == BLEND_TOWARD_CIRCLE)
       repair(evaluator, members, m_border_choice != AUTOMATIC_BORDER);
@@ -420,20 +428,29 @@ private:
     report.mean_value_interior = kept.mean_value_interior;
     report.repaired = kept.mean_value_interior ||
                       (m_border_choice != AUTOMATIC_BORDER &&
-                       kept.blend > evaluator.family().own_blend(static_cast<Member>(kept.family)));
+                       kept.blend > family.own_blend(static_cast<Member>(kept.family)));
     return OK;
   }
 
-  // Steps 1 and 2 of AUTOMATIC_BORDER (see set_border_choice()). Returns the members in the
-  // order of their own layouts' angle distortion, for the repair.
-  static std::vector<Member> search_automatic(internal::Border_evaluator<Patch>& evaluator, Report& report)
+  // Steps 1 and 2 of AUTOMATIC_BORDER (see set_border_choice()). `members`: the members in
+  // the order of their own layouts' angle distortion, for the repair.
+  Error_code search_automatic(Patch& patch, internal::Border_family<Patch>& family,
+                              internal::Border_evaluator<Patch>& evaluator, Report& report, Stopwatch& clock,
+                              std::vector<Member>& members)
   {
-    const internal::Border_family<Patch>& family = evaluator.family();
     std::vector<typename internal::Border_evaluator<Patch>::Request> batch(1, {internal::CIRCLE_MEMBER, 1.});
-    for(Member m : {internal::MEASURED_MEMBER, internal::CONFORMAL_MEMBER})
-      if(family.has(m))
-        batch.emplace_back(m, family.own_blend(m));
-    const std::vector<internal::Border_trial> own = evaluator.evaluate(batch, false);
+    if(family.has(internal::CONFORMAL_MEMBER))
+      batch.emplace_back(internal::CONFORMAL_MEMBER, family.own_blend(internal::CONFORMAL_MEMBER));
+    std::vector<internal::Border_trial> own = evaluator.evaluate(batch, false);
+    if(!own.back().valid)  // no valid conformal layout: the measured member too
+    {
+      report.interior_seconds += clock.lap();
+      const Error_code status = build_measured(patch, family, report, clock);
+      if(status == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM)
+        return status;
+      if(status == OK)
+        own.push_back(evaluator.evaluate({{internal::MEASURED_MEMBER, 0.}}, false).front());
+    }
     bool first = true;
     for(const internal::Border_trial& t : own)
       if(std::isfinite(t.estimate))
@@ -442,20 +459,19 @@ private:
           first ? t.flipped_faces : (std::min)(report.flipped_faces_before_repair, t.flipped_faces);
         first = false;
       }
-    std::vector<Member> search, order;
+    std::vector<Member> search;
     for(const internal::Border_trial& t : own)
       if(!t.valid && t.member != internal::CIRCLE_MEMBER && t.estimate < evaluator.best_objective())
         search.push_back(t.member);
     if(!search.empty())
       internal::search_smallest_valid_blend(evaluator, search, false);
     report.valid_before_repair = evaluator.best() >= 0;
-    std::vector<internal::Border_trial> sorted = own;
-    std::stable_sort(sorted.begin(), sorted.end(), [](const internal::Border_trial& a, const internal::Border_trial& b) {
+    std::stable_sort(own.begin(), own.end(), [](const internal::Border_trial& a, const internal::Border_trial& b) {
       return a.estimate < b.estimate;
     });
-    for(const internal::Border_trial& t : sorted)
-      order.push_back(t.member);
-    return order;
+    for(const internal::Border_trial& t : own)
+      members.push_back(t.member);
+    return OK;
   }
 
   // BLEND_TOWARD_CIRCLE: along each member, the smallest valid blend with the discrete
