@@ -13,6 +13,7 @@
 /// \file Cholmod_supernodal_cholesky_traits.h
 
 #include <CGAL/Eigen_matrix.h>
+#include <CGAL/Eigen_vector.h>
 #include <CGAL/Eigen_sparse_matrix.h>
 
 #include <Eigen/Core>
@@ -88,10 +89,14 @@ public:
   /// solves `A X = B` with the factor.
   bool linear_solver(const Vector& B, Vector& X)
   {
-    Eigen::MatrixXd x;
-    if(!m_state->solve(Eigen::MatrixXd(B), x))
+    Eigen::MatrixXd b(B.size(), 1), x;
+    for(Eigen::Index i = 0; i < B.size(); ++i)
+      b(i, 0) = B[i];
+    if(!m_state->solve(b, x))
       return false;
-    X = x.col(0);
+    X.resize(x.rows());
+    for(Eigen::Index i = 0; i < x.rows(); ++i)
+      X[i] = x(i, 0);
     return true;
   }
 
