@@ -35,6 +35,8 @@
 #include <CGAL/Surface_mesh_parameterization/geodesic_distance_map.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
+#include <boost/property_map/property_map.hpp>
+
 #include <array>
 #include <cmath>
 #include <map>
@@ -343,7 +345,11 @@ template <class M, class Center, class Distance>
 void run_combination(M& mesh, int& runs, int& straightest_failures)
 {
   typedef typename mbp_test::Kernel_of<M>::Point_2 Point_2;
-  auto uv = get(CGAL::dynamic_vertex_property_t<Point_2>(), mesh);
+  typedef typename boost::graph_traits<M>::vertex_descriptor vertex;
+  // (not a dynamic property map: CGAL 6's copies Point_2(), whose coordinates are
+  // indeterminate, into every vertex, which GCC 12 flags)
+  std::map<vertex, Point_2> uv_storage;
+  auto uv = boost::make_assoc_property_map(uv_storage);
   SMP::Measured_conformal_parameterizer_3<M, Center, Distance> p;
   const SMP::Error_code status = SMP::parameterize(mesh, p, mbp_test::longest_border(mesh), uv);
   ++runs;

@@ -40,10 +40,6 @@
 #include <string>
 #include <vector>
 
-#ifndef MBP_EXTENDED_TIER
-#define MBP_EXTENDED_TIER * boost::unit_test::label("extended")
-#endif
-
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                        K;
 typedef CGAL::Surface_mesh<K::Point_3>                        Mesh;
@@ -645,11 +641,7 @@ namespace {
 
 std::string shared_meshes()
 {
-#if defined(MBP_SHARED_MESH_DIR)
-  return MBP_SHARED_MESH_DIR;
-#else
-  return MBP_MESH_DIR;
-#endif
+  return mbp_test::shared_mesh_dir();  // the configured folder, or MBP_SHARED_MESH_DIR of the environment
 }
 
 } // namespace
