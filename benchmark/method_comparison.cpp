@@ -8,62 +8,89 @@
 // Author(s)     : The measured boundary parameterization authors
 
 // Time, peak memory and distortion of this package's Measured_conformal_parameterizer_3
-// against CGAL's parameterizers, on every disk mesh of a directory: the paper's Tables 1
-// (distortion) and 3 (time), plus the cost of one factorization as a floor.
+// against CGAL's parameterizers, on every disk mesh of a directory (the paper's Tables 1 and
+// 3), with the cost of one factorization as a floor; and a scale mode up to 2 million
+// vertices, in-process and whole process (the command-line program against Boundary First
+// Flattening's).
 //
-//   method_comparison [options] [MESH_DIR]   (default MESH_DIR: ../shared/data/meshes, as configured)
+//   method_comparison [options] [MESH_DIR]   (default MESH_DIR: the project's meshes, as configured)
 //
 //   --runs N        timed runs per method and mesh (default 5); the median is reported
 //   --mesh NAME     only this file of MESH_DIR (repeatable), e.g. to rerun a noisy row
 //   --no-memory     skip the peak memory measurement
-//   --scale         scale mode: the mesh of --scale-mesh refined by 1-to-4 midpoint
-//                   subdivision (every edge split at its midpoint, every triangle into 4)
-//   --scale-mesh F  the mesh the scale mode refines (default MESH_DIR/bimba_i.obj)
-//   --levels L      scale mode: subdivision levels up to L (default 2)
-//   --first-level K scale mode: the first level measured (default 1), e.g. to rerun a row
+//   --scale         scale mode (see below)
+//   --scale-case F:K[,K...]  scale mode: the mesh F (a path, or a file of MESH_DIR) refined K
+//                   times by 1-to-4 midpoint subdivision, for each K (repeatable; default
+//                   bimba_i.obj:0,1,2 and mask.off:3: 44.8k, 179k, 714k and 2.0M vertices)
+//   --large-runs N  scale mode: timed runs at 1M vertices or more (default 3)
 //   --dcp-cap S     scale mode: CGAL's DCP runs once, in a child process killed after S
-//                   seconds (default 900)
+//                   seconds (default 600; 0: no DCP)
+//   --cli PATH      scale mode, whole process: the command-line program (default, as
+//                   configured: the build's examples/measured_parameterization); none: skip
+//   --bff PATH      scale mode, whole process: Boundary First Flattening's command line
+//                   (default, as configured: ../shared/peers/bff-command-line); none: skip
+//   --whole-runs N  scale mode: whole-process runs of each program (default 3, interleaved)
+//   --work DIR      scale mode: where the refined meshes are written as OBJ files for the
+//                   whole-process runs, with the programs' outputs (default /tmp/mbp-scale)
 //
 // Methods (all through SMP::parameterize(mesh, parameterizer, longest border, uv map)):
-//   ours LDLT      SMP::Measured_conformal_parameterizer_3, Default_sparse_cholesky_traits
-//                  (Eigen's SimplicialLDLT), default use_concurrency(true): the spring
-//                  Laplacian is factorized in a second thread while the center is located;
-//                  default repair (an invalid result is blended toward a circle)
-//   ours LDLT seq  the same with use_concurrency(false)
-//   ours CHOLMOD   the same with Cholmod_supernodal_cholesky_traits (only when built with
-//                  CHOLMOD, i.e. MBP_WITH_CHOLMOD), concurrent and sequential
+//   auto LDLT      the library's default path with the automatic border, as the command
+//                  line runs it: Measured_conformal_parameterizer_3<Mesh,
+//                  Poisson_center_locator<Mesh>, Geodesic_border_distance<Mesh,
+//                  Fast_marching_geodesics>, Solver> with set_border_choice(AUTOMATIC_BORDER),
+//                  Sequential_tag, default repair; Solver = Default_sparse_cholesky_traits
+//                  (Eigen's SimplicialLDLT)
+//   auto CHOLMOD   the same with Cholmod_supernodal_cholesky_traits (AMD), when built with
+//                  CHOLMOD (MBP_WITH_CHOLMOD)
+//   MBPPP LDLT,    the paper's method: Measured_conformal_parameterizer_3 with its default
+//   MBPPP CHOLMOD  policies (Poisson center, Poisson distances) and MEASURED_BORDER (two
+//                  factorizations: L_II and the spring Laplacian); the scale mode runs the
+//                  CHOLMOD one only
 //   DCP            CGAL's Discrete_conformal_map_parameterizer_3, defaults (circular
-//                  arc-length border, BiCGSTAB + IncompleteLUT)
-//   LSCM           CGAL's LSCM_parameterizer_3, defaults (two fixed vertices)
-//   MVC            CGAL's Mean_value_coordinates_parameterizer_3, defaults (circular
-//                  arc-length border, BiCGSTAB + IncompleteLUT)
+//                  arc-length border, BiCGSTAB + IncompleteLUT); in the scale mode once, in a
+//                  capped child process
+//   LSCM, MVC      CGAL's LSCM_parameterizer_3 and Mean_value_coordinates_parameterizer_3,
+//                  defaults (not in the scale mode)
 //
 // Time: wall-clock seconds of the SMP::parameterize() call (reading the mesh, the quality
 // measure and printing are outside), median of N runs. The runs are interleaved (run 1 of
-// every method, then run 2, ...) so that load from other processes spreads over all methods.
-// "other load": the share of the machine's cores that other processes kept busy during the
-// timed runs of the row (/proc/stat minus this process); rerun rows where it is high.
+// every method and of the floors, then run 2, ...) so that load from other processes spreads
+// over all of them. Each row prints the 1-minute load average (/proc/loadavg) at its start and
+// "other load": the share of the machine's cores that other processes kept busy during its
+// timed runs (/proc/stat minus this process).
 //
-// Floor: one analyzePattern() + factorize() of the interior cotangent Laplacian L_II (border
-// eliminated), with the solver of the method: Eigen's SimplicialLDLT, or the configured
-// CholmodSupernodalLLT of Cholmod_supernodal_cholesky_traits (AMD ordering, nmethods = 1).
-// L_II is assembled once, outside the timing, with Parameterization_patch_3 and
-// internal::laplacian_triplets. Any method that factorizes L_II costs at least this; ours
-// also factorizes the spring Laplacian. "ratio" = method time / floor time (medians).
+// Floor: one factorization of the interior cotangent Laplacian L_II (border eliminated) by
+// the solver traits of the method: SolverTraits::factor(), i.e. Eigen's SimplicialLDLT
+// compute() (analyzePattern + factorize), or Cholmod_supernodal_cholesky_traits (AMD:
+// cholmod_analyze + cholmod_factorize). L_II is assembled once, outside the timing, exactly as
+// the package's Dirichlet engine assembles it (Parameterization_patch_3's Laplacian pattern,
+// cotangent weights, rows in vertex order). Any method that solves the discrete conformal
+// map costs at least this. "ratio" = method time / floor time of its solver (medians).
 //
-// Peak memory: each method runs once more in a child process (this program, fork()ed and
-// exec()ed with the hidden option --child), which reads the mesh, runs the method on a small
-// grid (so that code pages and library buffers are in place), releases free heap memory
-// (malloc_trim), resets its peak resident set size (/proc/self/clear_refs "5"), reads VmRSS,
-// runs the method on the mesh and reads VmHWM. Reported: VmHWM - VmRSS, in MB: what the
-// call adds to a process that holds the mesh (the UV map included, it is added before).
+// Peak memory (in-process): each method runs once more in a child process (this program,
+// fork()ed and exec()ed with the hidden option --child), which reads the mesh, runs the
+// method on a small grid (so that code pages and library buffers are in place), releases free
+// heap memory (malloc_trim), resets its peak resident set size (/proc/self/clear_refs "5"),
+// reads VmRSS, runs the method on the mesh and reads VmHWM. Reported: VmHWM - VmRSS, in MiB:
+// what the call adds to a process that holds the mesh (the UV map included).
 //
-// Distortion (METHOD.md section 5): SMP::measure_quality(), the paper's angle distortion
-// (Sheffer-de Sturler, optimal angles, divided by |V|) and Sander's L2 stretch (1 = optimal).
+// Whole process (scale mode): each refined mesh is written once as an OBJ file (9
+// significant digits, as scripts/refine_mesh.py writes), then the command-line program
+// (defaults: automatic border, fast marching distances, CHOLMOD when built with it; --json)
+// and BFF's command line (no option: its conformal map) run on it, interleaved, N times each.
+// Each run is a child of a small intermediate process (this program exec()ed with --spawn,
+// which fork()s and exec()s the program and wait4()s it): wall-clock seconds from fork() to
+// the end of wait4(), and ru_maxrss, the peak resident set of the program (a child fork()ed
+// directly from this large process would inherit its high-water mark). Medians reported.
+// The stage times of our runs come from the program's --json (io_times.read, times.*,
+// io_times.quality, io_times.write, statistics.factorizations).
+//
+// Distortion: SMP::measure_quality(), the paper's angle distortion (Sheffer-de Sturler,
+// optimal angles, divided by |V|) and Sander's L2 stretch (1 = optimal).
 //
 // Meshes that are not a single disk are skipped with the reason. The program prints
-// markdown tables on stdout and progress on stderr; it ends with the targets of the issue
-// (met / not met) evaluated on the numbers of this run.
+// markdown tables on stdout and progress on stderr; it ends with the targets of issues 13 and
+// 3, evaluated on the numbers of this run.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -75,8 +102,11 @@
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
+#include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
+#include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
+#include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
 #include <CGAL/Surface_mesh_parameterization/internal/laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 #ifdef MBP_WITH_CHOLMOD
@@ -84,11 +114,13 @@
 #endif
 
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
+#include <fcntl.h>
 #include <malloc.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -111,6 +143,13 @@
 #include <type_traits>
 #include <vector>
 
+#ifndef MBP_CLI_PROGRAM
+#define MBP_CLI_PROGRAM ""
+#endif
+#ifndef MBP_BFF_PROGRAM
+#define MBP_BFF_PROGRAM ""
+#endif
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
 typedef CGAL::Surface_mesh<K::Point_3>                          Mesh;
@@ -119,15 +158,16 @@ typedef boost::graph_traits<Mesh>::halfedge_descriptor          halfedge_descrip
 typedef Mesh::Property_map<vertex_descriptor, K::Point_2>       UV_map;
 typedef std::chrono::steady_clock                               Clock;
 
-typedef SMP::Measured_conformal_parameterizer_3<Mesh>           Ours_ldlt;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default, CGAL::Default,
-                                                CGAL::Parallel_tag> Ours_ldlt_parallel;
+typedef SMP::Poisson_center_locator<Mesh>                                     Poisson_center;
+typedef SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics>     Fast_marching_distance;
+typedef SMP::Default_sparse_cholesky_traits                                   Ldlt_traits;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, Poisson_center, Fast_marching_distance> Auto_ldlt;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh>                                          Mbppp_ldlt;
 #ifdef MBP_WITH_CHOLMOD
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default,
-                                                SMP::Cholmod_supernodal_cholesky_traits> Ours_cholmod;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default,
-                                                SMP::Cholmod_supernodal_cholesky_traits,
-                                                CGAL::Parallel_tag> Ours_cholmod_parallel;
+typedef SMP::Cholmod_supernodal_cholesky_traits                                                Cholmod_traits;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, Poisson_center, Fast_marching_distance,
+                                                Cholmod_traits>                                Auto_cholmod;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default, Cholmod_traits> Mbppp_cholmod;
 #endif
 typedef SMP::Discrete_conformal_map_parameterizer_3<Mesh>       Cgal_dcp;
 typedef SMP::LSCM_parameterizer_3<Mesh>                         Cgal_lscm;
@@ -135,39 +175,61 @@ typedef SMP::Mean_value_coordinates_parameterizer_3<Mesh>       Cgal_mvc;
 
 namespace {
 
+const double nan_value = std::numeric_limits<double>::quiet_NaN();
+
 // ---------------------------------------------------------------------------------------
 // Methods
 
-enum Method { OURS_LDLT, OURS_LDLT_SEQ, OURS_CHOLMOD, OURS_CHOLMOD_SEQ, CGAL_DCP, CGAL_LSCM, CGAL_MVC,
+enum Method { AUTO_LDLT, AUTO_CHOLMOD, MBPPP_LDLT, MBPPP_CHOLMOD, CGAL_DCP, CGAL_LSCM, CGAL_MVC,
               NUMBER_OF_METHODS };
+
+enum Solver { LDLT, CHOLMOD, NUMBER_OF_SOLVERS };
 
 const char* method_name(int m)
 {
-  static const char* names[NUMBER_OF_METHODS] = {"ours LDLT", "ours LDLT seq", "ours CHOLMOD", "ours CHOLMOD seq",
+  static const char* names[NUMBER_OF_METHODS] = {"auto LDLT", "auto CHOLMOD", "MBPPP LDLT", "MBPPP CHOLMOD",
                                                  "CGAL DCP", "CGAL LSCM", "CGAL MVC"};
   return names[m];
 }
 
-bool method_available(int m)
+bool is_ours(int m) { return m <= MBPPP_CHOLMOD; }
+
+// The solver of our methods (its floor), -1 for CGAL's.
+int solver_of(int m)
+{
+  if(m == AUTO_LDLT || m == MBPPP_LDLT)
+    return LDLT;
+  if(m == AUTO_CHOLMOD || m == MBPPP_CHOLMOD)
+    return CHOLMOD;
+  return -1;
+}
+
+bool solver_available(int s)
 {
 #ifdef MBP_WITH_CHOLMOD
-  (void)m;
+  (void)s;
   return true;
 #else
-  return m != OURS_CHOLMOD && m != OURS_CHOLMOD_SEQ;
+  return s == LDLT;
 #endif
 }
 
-// Stage times of our parameterizer (its own report), seconds.
+bool method_available(int m) { return solver_of(m) < 0 || solver_available(solver_of(m)); }
+
+const char* solver_name(int s) { return s == LDLT ? "LDLT" : "CHOLMOD"; }
+
+// Stage times and work of our parameterizer (its own report), seconds.
 struct Stages
 {
-  double preparation = 0., center = 0., distance = 0., border_map = 0., interior = 0., repair = 0., output = 0.,
-         total = 0., factorizations = 0.;
+  double preparation = 0., conformal_border = 0., center = 0., distance = 0., border_map = 0., interior = 0.,
+         repair = 0., output = 0., total = 0., factorization_seconds = 0.;
+  int factorizations = 0, back_substitutions = 0;
 };
 
-// What our parameterizer's validity check and repair did (its report).
-struct Repair_info
+// What our parameterizer kept (its report).
+struct Choice_info
 {
+  int kept = -1;                 // Border_family: CIRCLE, MEASURED, CONFORMAL
   std::size_t flips_before = 0;
   bool repaired = false;
   double blend = 0.;
@@ -180,7 +242,7 @@ struct Run
   double seconds = 0.;
   bool is_ours = false;
   Stages stages;
-  Repair_info repair;
+  Choice_info choice;
 };
 
 template <class Parameterizer>
@@ -194,13 +256,15 @@ Run time_parameterize(Mesh& mesh, Parameterizer& parameterizer, halfedge_descrip
 }
 
 template <class Ours>
-Run time_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv)
+Run time_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv, typename Ours::Border_choice choice)
 {
   Ours ours;
+  ours.set_border_choice(choice);
   Run r = time_parameterize(mesh, ours, bhd, uv);  // copies share the report
   const typename Ours::Report& report = ours.last_report();
   r.is_ours = true;
   r.stages.preparation = report.preparation_seconds;
+  r.stages.conformal_border = report.conformal_border_seconds;
   r.stages.center = report.center_seconds;
   r.stages.distance = report.distance_seconds;
   r.stages.border_map = report.border_map_seconds;
@@ -208,11 +272,14 @@ Run time_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv)
   r.stages.repair = report.repair_seconds;
   r.stages.output = report.output_seconds;
   r.stages.total = report.total_seconds;
-  r.stages.factorizations = report.statistics.factorization_seconds;
-  r.repair.flips_before = report.flipped_faces_before_repair;
-  r.repair.repaired = report.repaired;
-  r.repair.blend = report.blend;
-  r.repair.mean_value_interior = report.mean_value_interior;
+  r.stages.factorization_seconds = report.statistics.factorization_seconds;
+  r.stages.factorizations = report.statistics.factorizations;
+  r.stages.back_substitutions = report.statistics.back_substitutions;
+  r.choice.kept = static_cast<int>(report.kept_border);
+  r.choice.flips_before = report.flipped_faces_before_repair;
+  r.choice.repaired = report.repaired;
+  r.choice.blend = report.blend;
+  r.choice.mean_value_interior = report.mean_value_interior;
   return r;
 }
 
@@ -220,11 +287,11 @@ Run run_method(int m, Mesh& mesh, halfedge_descriptor bhd, UV_map uv)
 {
   switch(m)
   {
-  case OURS_LDLT:        return time_ours<Ours_ldlt_parallel>(mesh, bhd, uv);
-  case OURS_LDLT_SEQ:    return time_ours<Ours_ldlt>(mesh, bhd, uv);
+  case AUTO_LDLT:     return time_ours<Auto_ldlt>(mesh, bhd, uv, Auto_ldlt::AUTOMATIC_BORDER);
+  case MBPPP_LDLT:    return time_ours<Mbppp_ldlt>(mesh, bhd, uv, Mbppp_ldlt::MEASURED_BORDER);
 #ifdef MBP_WITH_CHOLMOD
-  case OURS_CHOLMOD:     return time_ours<Ours_cholmod_parallel>(mesh, bhd, uv);
-  case OURS_CHOLMOD_SEQ: return time_ours<Ours_cholmod>(mesh, bhd, uv);
+  case AUTO_CHOLMOD:  return time_ours<Auto_cholmod>(mesh, bhd, uv, Auto_cholmod::AUTOMATIC_BORDER);
+  case MBPPP_CHOLMOD: return time_ours<Mbppp_cholmod>(mesh, bhd, uv, Mbppp_cholmod::MEASURED_BORDER);
 #endif
   case CGAL_DCP:  { Cgal_dcp p;  return time_parameterize(mesh, p, bhd, uv); }
   case CGAL_LSCM: { Cgal_lscm p; return time_parameterize(mesh, p, bhd, uv); }
@@ -237,21 +304,10 @@ Run run_method(int m, Mesh& mesh, halfedge_descriptor bhd, UV_map uv)
 }
 
 // ---------------------------------------------------------------------------------------
-// Floor: one analyze + factorize of L_II
+// Floor: one factorization of L_II by the solver traits
 
-enum Solver { LDLT, CHOLMOD, NUMBER_OF_SOLVERS };
-
-bool solver_available(int s)
-{
-#ifdef MBP_WITH_CHOLMOD
-  (void)s;
-  return true;
-#else
-  return s == LDLT;
-#endif
-}
-
-// The interior cotangent Laplacian, as the package assembles it.
+// The interior cotangent Laplacian, as the Dirichlet engine assembles it (free rows in
+// vertex order, border eliminated).
 bool interior_cotangent_laplacian(const Mesh& mesh, halfedge_descriptor bhd, Eigen::SparseMatrix<double>& A)
 {
   SMP::Parameterization_patch_3<Mesh> patch;
@@ -265,33 +321,32 @@ bool interior_cotangent_laplacian(const Mesh& mesh, halfedge_descriptor bhd, Eig
   return true;
 }
 
-// Seconds of one analyzePattern() + factorize(), or a negative value on failure.
+template <class Traits>
+double time_traits_factor(const Eigen::SparseMatrix<double>& A)
+{
+  const typename Traits::Matrix M(A);  // copied outside the timing
+  Traits traits;
+  double D = 1.;
+  const Clock::time_point start = Clock::now();
+  const bool ok = traits.factor(M, D);
+  const double t = std::chrono::duration<double>(Clock::now() - start).count();
+  return ok ? t : -1.;
+}
+
+// Seconds of one factorization of A with solver s, or a negative value on failure.
 double time_factorization(int s, const Eigen::SparseMatrix<double>& A)
 {
   if(s == LDLT)
-  {
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > ldlt;
-    const Clock::time_point start = Clock::now();
-    ldlt.analyzePattern(A);
-    ldlt.factorize(A);
-    const double t = std::chrono::duration<double>(Clock::now() - start).count();
-    return ldlt.info() == Eigen::Success ? t : -1.;
-  }
+    return time_traits_factor<Ldlt_traits>(A);
 #ifdef MBP_WITH_CHOLMOD
-  SMP::Cholmod_supernodal_cholesky_traits traits;  // CholmodSupernodalLLT, AMD, nmethods = 1
-  auto& llt = traits.solver();
-  const Clock::time_point start = Clock::now();
-  llt.analyzePattern(A);
-  llt.factorize(A);
-  const double t = std::chrono::duration<double>(Clock::now() - start).count();
-  return llt.info() == Eigen::Success ? t : -1.;
+  return time_traits_factor<Cholmod_traits>(A);
 #else
   return -1.;
 #endif
 }
 
 // ---------------------------------------------------------------------------------------
-// Peak memory, in a child process
+// Child processes
 
 long status_kb(const char* key)  // a "Vm...:  N kB" line of /proc/self/status
 {
@@ -312,6 +367,98 @@ bool reset_peak_rss()
   return bool(out);
 }
 
+bool write_all(int fd, const void* data, std::size_t size)
+{
+  const char* p = static_cast<const char*>(data);
+  while(size > 0)
+  {
+    const ssize_t w = ::write(fd, p, size);
+    if(w < 0 && errno == EINTR)
+      continue;
+    if(w <= 0)
+      return false;
+    p += w;
+    size -= static_cast<std::size_t>(w);
+  }
+  return true;
+}
+
+// Runs this program again as `self flag FD args...` (fork() and exec(): a fork() alone would
+// inherit the state of the threading runtimes, OpenMP in CHOLMOD and OpenBLAS, which do not
+// survive it) and reads one T that it writes to the pipe FD. `cap_seconds` > 0: the child is
+// killed after that long (`killed`). Returns whether a whole T arrived.
+template <class T>
+bool run_self(const char* flag, const std::vector<std::string>& args, double cap_seconds, T& result, bool& killed)
+{
+  static_assert(std::is_trivially_copyable<T>::value, "sent through a pipe");
+  killed = false;
+  int fds[2];
+  if(::pipe(fds) != 0)
+    return false;
+  const std::string fd = std::to_string(fds[1]);
+  std::vector<std::string> all = {"/proc/self/exe", flag, fd};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for(std::string& a : all)
+    argv.push_back(&a[0]);
+  argv.push_back(nullptr);
+
+  std::fflush(stdout);
+  std::fflush(stderr);
+  const pid_t pid = ::fork();
+  if(pid < 0)
+  {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return false;
+  }
+  if(pid == 0)
+  {
+    ::close(fds[0]);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+
+  ::close(fds[1]);
+  const Clock::time_point deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                      std::chrono::duration<double>(cap_seconds));
+  char* p = reinterpret_cast<char*>(&result);
+  std::size_t got = 0;
+  while(got < sizeof(T))
+  {
+    int timeout_ms = -1;
+    if(cap_seconds > 0.)
+    {
+      const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
+      if(left <= 0.)
+      {
+        ::kill(pid, SIGKILL);
+        killed = true;
+        break;
+      }
+      timeout_ms = static_cast<int>(std::min(left * 1000. + 1., 60000.));
+    }
+    pollfd pfd{fds[0], POLLIN, 0};
+    const int ready = ::poll(&pfd, 1, timeout_ms);
+    if(ready < 0 && errno == EINTR)
+      continue;
+    if(ready < 0)
+      break;
+    if(ready == 0)
+      continue;
+    const ssize_t r = ::read(fds[0], p + got, sizeof(T) - got);
+    if(r < 0 && errno == EINTR)
+      continue;
+    if(r <= 0)
+      break;  // the child died without reporting
+    got += static_cast<std::size_t>(r);
+  }
+  ::close(fds[0]);
+  int wstatus = 0;
+  while(::waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) { }
+  return got == sizeof(T);
+}
+
 struct Child_result  // trivially copyable: travels through a pipe
 {
   bool finished = false;   // the child reported back
@@ -323,7 +470,6 @@ struct Child_result  // trivially copyable: travels through a pipe
   bool has_quality = false;
   SMP::Parameterization_quality quality;
 };
-static_assert(std::is_trivially_copyable<Child_result>::value, "sent through a pipe");
 
 // A small disk (a triangulated grid, slightly bent) to run each method on first.
 struct Warm_up
@@ -354,22 +500,6 @@ struct Warm_up
   }
 };
 
-bool write_all(int fd, const void* data, std::size_t size)
-{
-  const char* p = static_cast<const char*>(data);
-  while(size > 0)
-  {
-    const ssize_t w = ::write(fd, p, size);
-    if(w < 0 && errno == EINTR)
-      continue;
-    if(w <= 0)
-      return false;
-    p += w;
-    size -= static_cast<std::size_t>(w);
-  }
-  return true;
-}
-
 // Where a child process gets its mesh: a file, refined `levels` times by midpoint subdivision.
 struct Mesh_source
 {
@@ -378,85 +508,39 @@ struct Mesh_source
 };
 
 // Runs method m once in a child process (see the top of the file), with its distortion when
-// `with_quality`. `cap_seconds` > 0: the child is killed after that long. The child is this
-// program run again (fork() and exec()): a fork() alone would inherit the state of the
-// threading runtimes (OpenMP in CHOLMOD, OpenBLAS), which do not survive it.
+// `with_quality`. `cap_seconds` > 0: the child is killed after that long.
 Child_result run_in_child(int m, const Mesh_source& source, bool with_quality, double cap_seconds)
 {
   Child_result result;
-  int fds[2];
-  if(::pipe(fds) != 0)
-    return result;
-  const std::string method = std::to_string(m), levels = std::to_string(source.levels),
-                    quality = with_quality ? "1" : "0", fd = std::to_string(fds[1]);
-  std::vector<char*> args;
-  for(const std::string* a : {&method, &source.path, &levels, &quality, &fd})
-    args.push_back(const_cast<char*>(a->c_str()));
-  char child_flag[] = "--child";
-  args.insert(args.begin(), child_flag);
-  char self[] = "/proc/self/exe";
-  args.insert(args.begin(), self);
-  args.push_back(nullptr);
-
-  std::fflush(stdout);
-  std::fflush(stderr);
-  const pid_t pid = ::fork();
-  if(pid < 0)
-  {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    return result;
-  }
-  if(pid == 0)
-  {
-    ::close(fds[0]);
-    ::execv(self, args.data());
-    ::_exit(127);
-  }
-
-  ::close(fds[1]);
-  const Clock::time_point deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                                      std::chrono::duration<double>(cap_seconds));
-  char* p = reinterpret_cast<char*>(&result);
-  std::size_t got = 0;
   bool killed = false;
-  while(got < sizeof(result))
-  {
-    int timeout_ms = -1;
-    if(cap_seconds > 0.)
-    {
-      const double left = std::chrono::duration<double>(deadline - Clock::now()).count();
-      if(left <= 0.)
-      {
-        ::kill(pid, SIGKILL);
-        killed = true;
-        break;
-      }
-      timeout_ms = static_cast<int>(std::min(left * 1000. + 1., 60000.));
-    }
-    pollfd pfd{fds[0], POLLIN, 0};
-    const int ready = ::poll(&pfd, 1, timeout_ms);
-    if(ready < 0 && errno == EINTR)
-      continue;
-    if(ready < 0)
-      break;
-    if(ready == 0)
-      continue;
-    const ssize_t r = ::read(fds[0], p + got, sizeof(result) - got);
-    if(r < 0 && errno == EINTR)
-      continue;
-    if(r <= 0)
-      break;  // the child died without reporting
-    got += static_cast<std::size_t>(r);
-  }
-  ::close(fds[0]);
-  int wstatus = 0;
-  while(::waitpid(pid, &wstatus, 0) < 0 && errno == EINTR) { }
-  if(got < sizeof(result))
+  if(!run_self("--child", {std::to_string(m), source.path, std::to_string(source.levels), with_quality ? "1" : "0"},
+               cap_seconds, result, killed))
   {
     result = Child_result();
     result.timed_out = killed;
   }
+  return result;
+}
+
+// A program run as a whole process (through the --spawn intermediate).
+struct Process_result  // trivially copyable: travels through a pipe
+{
+  bool ran = false;      // the intermediate reported back
+  int exit_status = -1;  // -1: killed by a signal or not started
+  double seconds = 0.;   // fork() to the end of wait4()
+  long maxrss_kb = 0;    // ru_maxrss of the program
+};
+
+// Runs `program args...` with stdout to `out` and stderr to `err`.
+Process_result run_process(const std::string& program, const std::vector<std::string>& args,
+                           const std::string& out, const std::string& err)
+{
+  std::vector<std::string> all = {out, err, program};
+  all.insert(all.end(), args.begin(), args.end());
+  Process_result result;
+  bool killed = false;
+  if(!run_self("--spawn", all, 0., result, killed))
+    result = Process_result();
   return result;
 }
 
@@ -506,24 +590,60 @@ double other_load(const Cpu_sample& a, const Cpu_sample& b)
   const double seconds = std::chrono::duration<double>(b.time - a.time).count();
   const double ticks = double(::sysconf(_SC_CLK_TCK)), cores = double(::sysconf(_SC_NPROCESSORS_ONLN));
   if(!(seconds > 0.) || !(ticks > 0.) || !(cores > 0.))
-    return std::numeric_limits<double>::quiet_NaN();
+    return nan_value;
   return (std::max)(0., ((b.busy - a.busy) - (b.own - a.own)) / (ticks * seconds * cores));
+}
+
+// The 1-minute load average.
+double load_average()
+{
+  std::ifstream in("/proc/loadavg");
+  double one = nan_value;
+  in >> one;
+  return in ? one : nan_value;
 }
 
 // ---------------------------------------------------------------------------------------
 // Meshes
 
 using mbp_benchmark::not_a_disk;
-
 using mbp_benchmark::midpoint_subdivision;
+
+// Writes the mesh as OBJ ('v' with 9 significant digits, as scripts/refine_mesh.py, and 'f').
+bool write_obj_file(const Mesh& mesh, const std::string& path)
+{
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if(f == nullptr)
+    return false;
+  std::vector<char> buffer(1 << 20);
+  std::setvbuf(f, buffer.data(), _IOFBF, buffer.size());
+  std::vector<std::size_t> index(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+  std::size_t next = 1;
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const K::Point_3& p = mesh.point(v);
+    std::fprintf(f, "v %.9g %.9g %.9g\n", p.x(), p.y(), p.z());
+    index[v.idx()] = next++;
+  }
+  for(auto fd : faces(mesh))
+  {
+    std::fputc('f', f);
+    for(vertex_descriptor v : vertices_around_face(halfedge(fd, mesh), mesh))
+      std::fprintf(f, " %zu", index[v.idx()]);
+    std::fputc('\n', f);
+  }
+  const bool ok = std::ferror(f) == 0;
+  return (std::fclose(f) == 0) && ok;
+}
 
 // ---------------------------------------------------------------------------------------
 // Measurements of one mesh
 
 double median(std::vector<double> v)
 {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }), v.end());
   if(v.empty())
-    return std::numeric_limits<double>::quiet_NaN();
+    return nan_value;
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return (n % 2 == 1) ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
@@ -538,14 +658,50 @@ struct Method_result
   bool has_quality = false;
   SMP::Parameterization_quality quality;
   std::vector<Stages> stages;
-  bool has_repair_info = false;
-  Repair_info repair;          // of the first run
+  bool has_choice = false;
+  Choice_info choice;          // of the first run
   Child_result memory;         // the child run (memory, and time when timed_in_child)
 
   bool ok() const { return planned && status == SMP::OK && !seconds.empty(); }
   double time() const { return median(seconds); }
   bool has_memory() const { return memory.finished && memory.peak_reset && memory.status == SMP::OK; }
   double memory_mb() const { return double(memory.peak_kb - memory.base_kb) / 1024.; }
+};
+
+// The stage times of one run of the command-line program (its --json).
+struct Cli_stages
+{
+  double read = nan_value, preparation = nan_value, conformal_border = nan_value, center = nan_value,
+         distances = nan_value, border_map = nan_value, interior = nan_value, repair = nan_value,
+         output = nan_value, total = nan_value, quality = nan_value, write = nan_value,
+         factorizations = nan_value, factorization_seconds = nan_value;
+  std::string solver, border, distance, kept;
+};
+
+struct Whole_process
+{
+  bool planned = false;
+  std::vector<Process_result> ours, bff;
+  std::vector<Cli_stages> ours_stages;
+  std::string failure;  // of a run
+  double load_before = nan_value, load_after = nan_value;
+
+  static double median_seconds(const std::vector<Process_result>& v)
+  {
+    std::vector<double> s;
+    for(const Process_result& p : v)
+      if(p.ran && p.exit_status == 0)
+        s.push_back(p.seconds);
+    return median(s);
+  }
+  static double median_rss_mb(const std::vector<Process_result>& v)
+  {
+    std::vector<double> s;
+    for(const Process_result& p : v)
+      if(p.ran && p.exit_status == 0)
+        s.push_back(double(p.maxrss_kb) / 1024.);
+    return median(s);
+  }
 };
 
 struct Mesh_result
@@ -555,9 +711,12 @@ struct Mesh_result
   std::array<Method_result, NUMBER_OF_METHODS> methods;
   std::array<std::vector<double>, NUMBER_OF_SOLVERS> floors;
   bool floor_failed[NUMBER_OF_SOLVERS] = {false, false};
-  double other_load = std::numeric_limits<double>::quiet_NaN();  // during the timed runs
+  double other_load = nan_value;  // during the timed runs
+  double load_average = nan_value;  // 1-minute load average at the start of the row
+  int runs = 0;
+  Whole_process whole;
 
-  double floor(int s) const { return floors[s].empty() ? std::numeric_limits<double>::quiet_NaN() : median(floors[s]); }
+  double floor(int s) const { return floors[s].empty() ? nan_value : median(floors[s]); }
 };
 
 struct Plan
@@ -566,23 +725,117 @@ struct Plan
   std::vector<int> timed_in_child; // one capped run in a child (time, memory, distortion)
   bool memory = true;              // a child run of every timed method for its memory
   int runs = 5;
+  int large_runs = 3;              // runs at 1M vertices or more
   double cap_seconds = 0.;
+  // whole process (scale mode)
+  std::string cli, bff, work;
+  int whole_runs = 3;
 };
 
-Mesh_result measure_mesh(const std::string& name, Mesh& mesh, const Mesh_source& source, const Plan& plan)
+// The number after "key": inside the first flat object "object": {...} of a JSON text.
+double json_number(const std::string& text, const std::string& object, const std::string& key)
 {
-  Mesh_result res;
-  res.name = name;
-  res.V = num_vertices(mesh);
-  res.F = num_faces(mesh);
-  const halfedge_descriptor bhd = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
-  UV_map uv = mesh.add_property_map<vertex_descriptor, K::Point_2>("v:bench_uv").first;
+  std::size_t at = 0;
+  if(!object.empty())
+  {
+    at = text.find("\"" + object + "\"");
+    if(at == std::string::npos)
+      return nan_value;
+  }
+  const std::size_t end = object.empty() ? text.size() : text.find('}', at);
+  const std::size_t k = text.find("\"" + key + "\"", at);
+  if(k == std::string::npos || k > end)
+    return nan_value;
+  const std::size_t colon = text.find(':', k);
+  if(colon == std::string::npos)
+    return nan_value;
+  char* stop = nullptr;
+  const double x = std::strtod(text.c_str() + colon + 1, &stop);
+  return stop == text.c_str() + colon + 1 ? nan_value : x;
+}
 
-  // Child runs (memory; time and distortion of the capped method).
+std::string json_string(const std::string& text, const std::string& object, const std::string& key)
+{
+  std::size_t at = 0;
+  if(!object.empty())
+  {
+    at = text.find("\"" + object + "\"");
+    if(at == std::string::npos)
+      return "";
+  }
+  const std::size_t k = text.find("\"" + key + "\"", at);
+  if(k == std::string::npos)
+    return "";
+  const std::size_t open = text.find('"', text.find(':', k));
+  const std::size_t close = open == std::string::npos ? open : text.find('"', open + 1);
+  return close == std::string::npos ? "" : text.substr(open + 1, close - open - 1);
+}
+
+Cli_stages read_cli_json(const std::string& path)
+{
+  std::ifstream in(path);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string t = buffer.str();
+  Cli_stages s;
+  s.read = json_number(t, "io_times", "read");
+  s.quality = json_number(t, "io_times", "quality");
+  s.write = json_number(t, "io_times", "write");
+  s.preparation = json_number(t, "times", "preparation");
+  s.conformal_border = json_number(t, "times", "conformal_border");
+  s.center = json_number(t, "times", "center");
+  s.distances = json_number(t, "times", "distances");
+  s.border_map = json_number(t, "times", "border_map");
+  s.interior = json_number(t, "times", "interior");
+  s.output = json_number(t, "times", "output");
+  s.total = json_number(t, "times", "total");
+  s.repair = json_number(t, "repair", "seconds");
+  s.factorizations = json_number(t, "statistics", "factorizations");
+  s.factorization_seconds = json_number(t, "statistics", "factorization_seconds");
+  s.solver = json_string(t, "", "solver");
+  s.distance = json_string(t, "", "border_distance");
+  s.border = json_string(t, "border_choice", "mode");
+  s.kept = json_string(t, "chosen", "kind");
+  return s;
+}
+
+// The command line and BFF on the OBJ file of the mesh, interleaved (scale mode).
+void measure_whole_process(const std::string& obj, const std::string& stem, const Plan& plan, Whole_process& w)
+{
+  w.planned = true;
+  w.load_before = load_average();
+  const std::string base = (std::filesystem::path(plan.work) / stem).string();
+  for(int r = 0; r < plan.whole_runs; ++r)
+  {
+    if(!plan.cli.empty())
+    {
+      std::cerr << "    whole process, ours, run " << r + 1 << std::endl;
+      const Process_result p = run_process(plan.cli, {obj, "--output=" + base + "_ours_uv.obj", "--json"},
+                                           base + "_ours.json", base + "_ours.log");
+      w.ours.push_back(p);
+      if(p.ran && p.exit_status == 0)
+        w.ours_stages.push_back(read_cli_json(base + "_ours.json"));
+      else
+        w.failure += "ours exit " + std::to_string(p.exit_status) + " (see " + base + "_ours.log); ";
+    }
+    if(!plan.bff.empty())
+    {
+      std::cerr << "    whole process, BFF, run " << r + 1 << std::endl;
+      const Process_result p = run_process(plan.bff, {obj, base + "_bff_uv.obj"}, base + "_bff.log", base + "_bff.log");
+      w.bff.push_back(p);
+      if(!(p.ran && p.exit_status == 0))
+        w.failure += "BFF exit " + std::to_string(p.exit_status) + " (see " + base + "_bff.log); ";
+    }
+  }
+  w.load_after = load_average();
+}
+
+void run_children(const Plan& plan, const Mesh_source& source, const std::string& name, Mesh_result& res)
+{
   for(int m : plan.timed_in_child)
   {
-    std::cerr << "  " << name << ": " << method_name(m) << " (one run in a child, cap "
-              << plan.cap_seconds << " s)" << std::endl;
+    std::cerr << "  " << name << ": " << method_name(m) << " (one run in a child, cap " << plan.cap_seconds << " s)"
+              << std::endl;
     Method_result& mr = res.methods[m];
     mr.planned = true;
     mr.timed_in_child = true;
@@ -599,46 +852,71 @@ Mesh_result measure_mesh(const std::string& name, Mesh& mesh, const Mesh_source&
   }
   if(plan.memory)
     for(int m : plan.timed)
+    {
+      std::cerr << "  " << name << ": " << method_name(m) << " (memory, in a child)" << std::endl;
       res.methods[m].memory = run_in_child(m, source, false, 0.);
+    }
+}
+
+void time_one_run(int m, Mesh& mesh, halfedge_descriptor bhd, UV_map uv, bool first, Method_result& mr)
+{
+  if(!first && mr.status != SMP::OK)
+    return;
+  mr.planned = true;
+  const Run run = run_method(m, mesh, bhd, uv);
+  if(run.status != SMP::OK)
+  {
+    mr.status = run.status;
+    return;
+  }
+  mr.seconds.push_back(run.seconds);
+  if(run.is_ours)
+    mr.stages.push_back(run.stages);
+  if(run.is_ours && !mr.has_choice)
+  {
+    mr.choice = run.choice;
+    mr.has_choice = true;
+  }
+  if(!mr.has_quality)
+  {
+    mr.quality = SMP::measure_quality(mesh, faces(mesh), uv);
+    mr.has_quality = true;
+  }
+}
+
+Mesh_result measure_mesh(const std::string& name, Mesh& mesh, const Mesh_source& source, const Plan& plan)
+{
+  Mesh_result res;
+  res.name = name;
+  res.V = num_vertices(mesh);
+  res.F = num_faces(mesh);
+  res.load_average = load_average();
+  res.runs = res.V >= 1000000 ? plan.large_runs : plan.runs;
+  const halfedge_descriptor bhd = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
+  UV_map uv = mesh.add_property_map<vertex_descriptor, K::Point_2>("v:bench_uv").first;
+
+  run_children(plan, source, name, res);
 
   Eigen::SparseMatrix<double> A;
   const bool have_laplacian = interior_cotangent_laplacian(mesh, bhd, A);
+  bool needs_floor[NUMBER_OF_SOLVERS] = {false, false};
+  for(int m : plan.timed)
+    if(solver_of(m) >= 0)
+      needs_floor[solver_of(m)] = true;
 
   const Cpu_sample before = sample_cpu();
-  for(int r = 0; r < plan.runs; ++r)
+  for(int r = 0; r < res.runs; ++r)
   {
     for(int m : plan.timed)
     {
-      Method_result& mr = res.methods[m];
-      if(r > 0 && mr.status != SMP::OK)
-        continue;
-      mr.planned = true;
-      const Run run = run_method(m, mesh, bhd, uv);
-      if(r == 0)
-        mr.status = run.status;
-      if(run.status != SMP::OK)
-      {
-        mr.status = run.status;
-        continue;
-      }
-      mr.seconds.push_back(run.seconds);
-      if(run.is_ours)
-        mr.stages.push_back(run.stages);
-      if(run.is_ours && !mr.has_repair_info)
-      {
-        mr.repair = run.repair;
-        mr.has_repair_info = true;
-      }
-      if(!mr.has_quality)
-      {
-        mr.quality = SMP::measure_quality(mesh, faces(mesh), uv);
-        mr.has_quality = true;
-      }
+      std::cerr << "  " << name << ": " << method_name(m) << ", run " << r + 1 << std::endl;
+      time_one_run(m, mesh, bhd, uv, r == 0, res.methods[m]);
     }
     for(int s = 0; s < NUMBER_OF_SOLVERS; ++s)
     {
-      if(!solver_available(s) || !have_laplacian || res.floor_failed[s])
+      if(!needs_floor[s] || !solver_available(s) || !have_laplacian || res.floor_failed[s])
         continue;
+      std::cerr << "  " << name << ": floor " << solver_name(s) << ", run " << r + 1 << std::endl;
       const double t = time_factorization(s, A);
       if(t < 0.)
         res.floor_failed[s] = true;
@@ -685,17 +963,22 @@ std::string time_cell(const Method_result& mr)
 
 double ratio(double a, double b)
 {
-  return (std::isnan(a) || std::isnan(b) || !(b > 0.)) ? std::numeric_limits<double>::quiet_NaN() : a / b;
+  return (std::isnan(a) || std::isnan(b) || !(b > 0.)) ? nan_value : a / b;
 }
 
 double time_of(const Mesh_result& r, int m)
 {
-  return r.methods[m].ok() ? r.methods[m].time() : std::numeric_limits<double>::quiet_NaN();
+  return r.methods[m].ok() ? r.methods[m].time() : nan_value;
 }
 
 double memory_of(const Mesh_result& r, int m)
 {
-  return r.methods[m].has_memory() ? r.methods[m].memory_mb() : std::numeric_limits<double>::quiet_NaN();
+  return r.methods[m].has_memory() ? r.methods[m].memory_mb() : nan_value;
+}
+
+double floor_ratio(const Mesh_result& r, int m)
+{
+  return solver_of(m) < 0 ? nan_value : ratio(time_of(r, m), r.floor(solver_of(m)));
 }
 
 std::string memory_cell(const Method_result& mr)
@@ -714,259 +997,408 @@ std::string memory_cell(const Method_result& mr)
 std::string quality_cells(const Method_result& mr)
 {
   if(!mr.has_quality)
-    return " - | - |";
-  return " " + fmt("%.4f", mr.quality.angle_distortion) + " | " + fmt("%.4f", mr.quality.l2_stretch) + " |";
+    return " - | - | - |";
+  return " " + fmt("%.4f", mr.quality.angle_distortion) + " | " + fmt("%.4f", mr.quality.l2_stretch) + " | " +
+         std::to_string(mr.quality.flipped_faces) + " |";
 }
 
-std::string repair_cell(const Method_result& mr)
+const char* family_name(int kept)
 {
-  if(!mr.has_repair_info)
-    return "-";
-  if(!mr.repair.repaired)
-    return "no";
-  return "blend " + fmt("%.3f", mr.repair.blend) + (mr.repair.mean_value_interior ? ", MVC interior" : ", DCP interior");
-}
-
-// Largest relative difference of the angle distortion and L2 stretch among our configurations.
-double ours_disagreement(const Mesh_result& r)
-{
-  const int ours[] = {OURS_LDLT, OURS_LDLT_SEQ, OURS_CHOLMOD, OURS_CHOLMOD_SEQ};
-  double worst = 0.;
-  const Method_result& ref = r.methods[OURS_LDLT];
-  if(!ref.has_quality)
-    return 0.;
-  for(int m : ours)
+  switch(kept)
   {
-    const Method_result& mr = r.methods[m];
-    if(!mr.has_quality)
+  case Auto_ldlt::CIRCLE: return "circle";
+  case Auto_ldlt::MEASURED: return "measured";
+  case Auto_ldlt::CONFORMAL: return "conformal";
+  default: return "-";
+  }
+}
+
+std::string choice_cell(const Method_result& mr)
+{
+  if(!mr.has_choice)
+    return "-";
+  std::string s = family_name(mr.choice.kept);
+  if(mr.choice.blend > 0.)
+    s += ", blend " + fmt("%.3f", mr.choice.blend);
+  if(mr.choice.mean_value_interior)
+    s += ", MVC interior";
+  if(mr.choice.repaired)
+    s += " (repaired; " + std::to_string(mr.choice.flips_before) + " flips before)";
+  return s;
+}
+
+// The methods measured in any row, in the order of the enum.
+std::vector<int> planned_methods(const std::vector<Mesh_result>& results)
+{
+  std::vector<int> ms;
+  for(int m = 0; m < NUMBER_OF_METHODS; ++m)
+    for(const Mesh_result& r : results)
+      if(r.methods[m].planned)
+      {
+        ms.push_back(m);
+        break;
+      }
+  return ms;
+}
+
+bool planned(const std::vector<int>& ms, int m) { return std::find(ms.begin(), ms.end(), m) != ms.end(); }
+
+std::string load_cells(const Mesh_result& r)
+{
+  return fmt("%.2f", r.load_average) + " | " + fmt("%.0f%%", 100. * r.other_load);
+}
+
+// Largest relative difference of the angle distortion and L2 stretch between LDLT and
+// CHOLMOD for the same border choice.
+double solver_disagreement(const Mesh_result& r)
+{
+  double worst = 0.;
+  for(auto pair : {std::make_pair(AUTO_LDLT, AUTO_CHOLMOD), std::make_pair(MBPPP_LDLT, MBPPP_CHOLMOD)})
+  {
+    const Method_result& a = r.methods[pair.first];
+    const Method_result& b = r.methods[pair.second];
+    if(!a.has_quality || !b.has_quality)
       continue;
-    worst = (std::max)(worst, std::abs(mr.quality.angle_distortion - ref.quality.angle_distortion) /
-                                (std::max)(ref.quality.angle_distortion, 1e-300));
-    worst = (std::max)(worst, std::abs(mr.quality.l2_stretch - ref.quality.l2_stretch) / ref.quality.l2_stretch);
+    worst = (std::max)(worst, std::abs(a.quality.angle_distortion - b.quality.angle_distortion) /
+                                (std::max)(a.quality.angle_distortion, 1e-300));
+    worst = (std::max)(worst, std::abs(a.quality.l2_stretch - b.quality.l2_stretch) / a.quality.l2_stretch);
   }
   return worst;
 }
 
-void print_quality_table(const std::vector<Mesh_result>& results, bool with_lscm_mvc)
+void print_quality_table(const std::vector<Mesh_result>& results)
 {
-  std::printf("\n### Distortion\n\n");
-  std::printf("| mesh | V | F | ours: angle dist. | ours: L2 | ours: flips | ours: flips before repair | ours: repair |"
-              " DCP: angle dist. | DCP: L2 | DCP: flips |");
-  if(with_lscm_mvc)
-    std::printf(" LSCM: angle dist. | LSCM: L2 | MVC: angle dist. | MVC: L2 |");
-  std::printf("\n|---|---|---|---|---|---|---|---|---|---|---|%s\n", with_lscm_mvc ? "---|---|---|---|" : "");
+  const std::vector<int> ms = planned_methods(results);
+  std::printf("\n### Distortion (angle distortion, L2 stretch, flipped faces)\n\n| mesh | V | F |");
+  std::string rule = "|---|---|---|";
+  std::vector<int> shown;
+  for(int m : ms)
+    if(!(m == AUTO_LDLT && planned(ms, AUTO_CHOLMOD)) && !(m == MBPPP_LDLT && planned(ms, MBPPP_CHOLMOD)))
+      shown.push_back(m);
+  for(int m : shown)
+  {
+    const char* n = (m == AUTO_CHOLMOD || m == AUTO_LDLT) ? "auto" : (m == MBPPP_CHOLMOD || m == MBPPP_LDLT) ? "MBPPP"
+                                                                                                            : method_name(m);
+    std::printf(" %s: angle | %s: L2 | %s: flips |", n, n, n);
+    rule += "---|---|---|";
+    if(is_ours(m))
+    {
+      std::printf(" %s: kept |", n);
+      rule += "---|";
+    }
+  }
+  std::printf("\n%s\n", rule.c_str());
   double disagreement = 0.;
   for(const Mesh_result& r : results)
   {
-    const Method_result& ours = r.methods[OURS_LDLT];
-    const Method_result& dcp = r.methods[CGAL_DCP];
-    std::printf("| %s | %zu | %zu |%s %s | %s | %s |%s %s |", r.name.c_str(), r.V, r.F, quality_cells(ours).c_str(),
-                ours.has_quality ? std::to_string(ours.quality.flipped_faces).c_str() : "-",
-                ours.has_repair_info ? std::to_string(ours.repair.flips_before).c_str() : "-",
-                repair_cell(ours).c_str(), quality_cells(dcp).c_str(),
-                dcp.has_quality ? std::to_string(dcp.quality.flipped_faces).c_str() : "-");
-    if(with_lscm_mvc)
-      std::printf("%s%s", quality_cells(r.methods[CGAL_LSCM]).c_str(), quality_cells(r.methods[CGAL_MVC]).c_str());
+    std::printf("| %s | %zu | %zu |", r.name.c_str(), r.V, r.F);
+    for(int m : shown)
+    {
+      const Method_result& mr = r.methods[m];
+      std::printf("%s", quality_cells(mr).c_str());
+      if(is_ours(m))
+        std::printf(" %s |", choice_cell(mr).c_str());
+    }
     std::printf("\n");
-    disagreement = (std::max)(disagreement, ours_disagreement(r));
+    disagreement = (std::max)(disagreement, solver_disagreement(r));
   }
-  std::printf("\nours = Measured_conformal_parameterizer_3 (LDLT, concurrent), default repair; its other"
-              " configurations give the same figures within a relative %.1e.\n", disagreement);
+  std::printf("\nauto and MBPPP: the CHOLMOD configurations when built with CHOLMOD; LDLT gives the same"
+              " figures within a relative %.1e.\n", disagreement);
 }
 
-void print_time_table(const std::vector<Mesh_result>& results, bool with_lscm_mvc, int runs)
+void print_time_table(const std::vector<Mesh_result>& results)
 {
-  std::printf("\n### Time (seconds, median of %d runs) and ratio to the single-factorization floor\n\n", runs);
-  std::printf("| mesh | V | F | ours LDLT | floor LDLT | ratio | ours LDLT seq | ratio |"
-              " ours CHOLMOD | floor CHOLMOD | ratio | ours CHOLMOD seq | ratio |"
-              " CGAL DCP | DCP / ours LDLT | DCP / ours CHOLMOD |");
-  if(with_lscm_mvc)
-    std::printf(" CGAL LSCM | CGAL MVC |");
-  std::printf(" other load |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|%s---|\n",
-              with_lscm_mvc ? "---|---|" : "");
+  const std::vector<int> ms = planned_methods(results);
+  std::printf("\n### Time (seconds, median of the row's runs) and ratio to the single-factorization floor\n\n");
+  std::printf("| mesh | V | F | runs | floor LDLT | floor CHOLMOD |");
+  std::string rule = "|---|---|---|---|---|---|";
+  for(int m : ms)
+  {
+    std::printf(" %s |", method_name(m));
+    rule += "---|";
+    if(is_ours(m))
+    {
+      std::printf(" / floor |");
+      rule += "---|";
+    }
+  }
+  const bool dcp = planned(ms, CGAL_DCP);
+  if(dcp)
+  {
+    std::printf(" DCP / auto LDLT | DCP / auto CHOLMOD |");
+    rule += "---|---|";
+  }
+  std::printf(" load (1 min) | other load |\n%s---|---|\n", rule.c_str());
   for(const Mesh_result& r : results)
   {
-    const double fl = r.floor(LDLT), fc = r.floor(CHOLMOD);
-    std::printf("| %s | %zu | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |",
-                r.name.c_str(), r.V, r.F,
-                time_cell(r.methods[OURS_LDLT]).c_str(), seconds_cell(fl).c_str(),
-                fmt("%.2f", ratio(time_of(r, OURS_LDLT), fl)).c_str(),
-                time_cell(r.methods[OURS_LDLT_SEQ]).c_str(), fmt("%.2f", ratio(time_of(r, OURS_LDLT_SEQ), fl)).c_str(),
-                time_cell(r.methods[OURS_CHOLMOD]).c_str(), seconds_cell(fc).c_str(),
-                fmt("%.2f", ratio(time_of(r, OURS_CHOLMOD), fc)).c_str(),
-                time_cell(r.methods[OURS_CHOLMOD_SEQ]).c_str(),
-                fmt("%.2f", ratio(time_of(r, OURS_CHOLMOD_SEQ), fc)).c_str(),
-                time_cell(r.methods[CGAL_DCP]).c_str(),
-                fmt("%.1f", ratio(time_of(r, CGAL_DCP), time_of(r, OURS_LDLT))).c_str(),
-                fmt("%.1f", ratio(time_of(r, CGAL_DCP), time_of(r, OURS_CHOLMOD))).c_str());
-    if(with_lscm_mvc)
-      std::printf(" %s | %s |", time_cell(r.methods[CGAL_LSCM]).c_str(), time_cell(r.methods[CGAL_MVC]).c_str());
-    std::printf(" %s |\n", fmt("%.0f%%", 100. * r.other_load).c_str());
+    std::printf("| %s | %zu | %zu | %d | %s | %s |", r.name.c_str(), r.V, r.F, r.runs, seconds_cell(r.floor(LDLT)).c_str(),
+                seconds_cell(r.floor(CHOLMOD)).c_str());
+    for(int m : ms)
+    {
+      std::printf(" %s |", time_cell(r.methods[m]).c_str());
+      if(is_ours(m))
+        std::printf(" %s |", fmt("%.2f", floor_ratio(r, m)).c_str());
+    }
+    if(dcp)
+      std::printf(" %s | %s |", fmt("%.1f", ratio(time_of(r, CGAL_DCP), time_of(r, AUTO_LDLT))).c_str(),
+                  fmt("%.1f", ratio(time_of(r, CGAL_DCP), time_of(r, AUTO_CHOLMOD))).c_str());
+    std::printf(" %s |\n", load_cells(r).c_str());
   }
 }
 
-void print_memory_table(const std::vector<Mesh_result>& results, bool with_lscm_mvc)
+void print_memory_table(const std::vector<Mesh_result>& results)
 {
-  std::printf("\n### Peak memory (MB above the starting resident set, one run in a child process)\n\n");
-  std::printf("| mesh | V | ours LDLT | ours LDLT seq | ours CHOLMOD | ours CHOLMOD seq | CGAL DCP |");
-  if(with_lscm_mvc)
-    std::printf(" CGAL LSCM | CGAL MVC |");
-  std::printf(" ours LDLT / DCP | ours CHOLMOD / DCP |\n|---|---|---|---|---|---|---|---|---|%s\n",
-              with_lscm_mvc ? "---|---|" : "");
+  const std::vector<int> ms = planned_methods(results);
+  std::printf("\n### Peak memory of the call (MiB above the starting resident set, one run in a child process)\n\n");
+  std::printf("| mesh | V |");
+  std::string rule = "|---|---|";
+  for(int m : ms)
+  {
+    std::printf(" %s |", method_name(m));
+    rule += "---|";
+  }
+  const bool dcp = planned(ms, CGAL_DCP);
+  if(dcp)
+  {
+    std::printf(" auto LDLT / DCP | auto CHOLMOD / DCP |");
+    rule += "---|---|";
+  }
+  std::printf("\n%s\n", rule.c_str());
   for(const Mesh_result& r : results)
   {
     std::printf("| %s | %zu |", r.name.c_str(), r.V);
-    for(int m : {OURS_LDLT, OURS_LDLT_SEQ, OURS_CHOLMOD, OURS_CHOLMOD_SEQ, CGAL_DCP})
+    for(int m : ms)
       std::printf(" %s |", memory_cell(r.methods[m]).c_str());
-    if(with_lscm_mvc)
-      std::printf(" %s | %s |", memory_cell(r.methods[CGAL_LSCM]).c_str(), memory_cell(r.methods[CGAL_MVC]).c_str());
-    std::printf(" %s | %s |\n", fmt("%.2f", ratio(memory_of(r, OURS_LDLT), memory_of(r, CGAL_DCP))).c_str(),
-                fmt("%.2f", ratio(memory_of(r, OURS_CHOLMOD), memory_of(r, CGAL_DCP))).c_str());
+    if(dcp)
+      std::printf(" %s | %s |", fmt("%.2f", ratio(memory_of(r, AUTO_LDLT), memory_of(r, CGAL_DCP))).c_str(),
+                  fmt("%.2f", ratio(memory_of(r, AUTO_CHOLMOD), memory_of(r, CGAL_DCP))).c_str());
+    std::printf("\n");
   }
 }
 
-void print_stage_table(const std::vector<Mesh_result>& results)
+void print_stage_table(const std::vector<Mesh_result>& results, std::size_t min_vertices)
 {
-  std::printf("\n### Where our time goes (seconds, median per stage; Report of Measured_conformal_parameterizer_3)\n\n");
-  std::printf("| mesh | V | config | prep. | center (L_II + spring fact. + center solve) | distance | border map |"
-              " interior | check + repair | output | call total | sum of factorizations | SMP::parameterize |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("\n### Where our time goes (seconds, median per stage; the parameterizer's report), meshes of >= %zu"
+              " vertices\n\n", min_vertices);
+  std::printf("| mesh | V | config | prep. | conformal border | center | distances | border map | layouts |"
+              " repair | output | call total | factorizations | factorization s | back-subst. | SMP::parameterize |"
+              " floor | call total - factorizations |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for(const Mesh_result& r : results)
-    for(int m : {OURS_LDLT, OURS_LDLT_SEQ, OURS_CHOLMOD, OURS_CHOLMOD_SEQ})
+  {
+    if(r.V < min_vertices)
+      continue;
+    for(int m : {AUTO_LDLT, AUTO_CHOLMOD, MBPPP_LDLT, MBPPP_CHOLMOD})
     {
       const Method_result& mr = r.methods[m];
       if(!mr.ok() || mr.stages.empty())
         continue;
-      auto med = [&](double Stages::*field) {
+      auto med = [&](auto field) {
         std::vector<double> v;
         for(const Stages& s : mr.stages)
-          v.push_back(s.*field);
-        return seconds_cell(median(v));
+          v.push_back(static_cast<double>(s.*field));
+        return median(v);
       };
-      std::printf("| %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", r.name.c_str(), r.V,
-                  method_name(m), med(&Stages::preparation).c_str(), med(&Stages::center).c_str(),
-                  med(&Stages::distance).c_str(), med(&Stages::border_map).c_str(), med(&Stages::interior).c_str(),
-                  med(&Stages::repair).c_str(), med(&Stages::output).c_str(), med(&Stages::total).c_str(), med(&Stages::factorizations).c_str(),
-                  seconds_cell(mr.time()).c_str());
+      const double total = med(&Stages::total), fact = med(&Stages::factorization_seconds);
+      std::printf("| %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+                  r.name.c_str(), r.V, method_name(m), seconds_cell(med(&Stages::preparation)).c_str(),
+                  seconds_cell(med(&Stages::conformal_border)).c_str(), seconds_cell(med(&Stages::center)).c_str(),
+                  seconds_cell(med(&Stages::distance)).c_str(), seconds_cell(med(&Stages::border_map)).c_str(),
+                  seconds_cell(med(&Stages::interior)).c_str(), seconds_cell(med(&Stages::repair)).c_str(),
+                  seconds_cell(med(&Stages::output)).c_str(), seconds_cell(total).c_str(),
+                  fmt("%.0f", med(&Stages::factorizations)).c_str(), seconds_cell(fact).c_str(),
+                  fmt("%.0f", med(&Stages::back_substitutions)).c_str(), seconds_cell(mr.time()).c_str(),
+                  seconds_cell(r.floor(solver_of(m))).c_str(), seconds_cell(total - fact).c_str());
     }
+  }
+}
+
+double stage_median(const std::vector<Cli_stages>& v, double Cli_stages::*field)
+{
+  std::vector<double> x;
+  for(const Cli_stages& s : v)
+    x.push_back(s.*field);
+  return median(x);
+}
+
+void print_whole_process_tables(const std::vector<Mesh_result>& results, const Plan& plan)
+{
+  std::printf("\n### Whole process: the command line against BFF's (median of %d interleaved runs each)\n\n",
+              plan.whole_runs);
+  std::printf("ours: `%s IN.obj --output=OUT.obj --json` (defaults); BFF: `%s IN.obj OUT.obj`. Peak memory:"
+              " ru_maxrss of the process.\n\n", plan.cli.empty() ? "(none)" : plan.cli.c_str(),
+              plan.bff.empty() ? "(none)" : plan.bff.c_str());
+  std::printf("| mesh | V | F | ours (s) | ours peak (MiB) | BFF (s) | BFF peak (MiB) | BFF / ours time |"
+              " ours / BFF memory | ours: solver, border, distances, kept | load (1 min) before, after | failures |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for(const Mesh_result& r : results)
+  {
+    const Whole_process& w = r.whole;
+    if(!w.planned)
+      continue;
+    const double ot = Whole_process::median_seconds(w.ours), bt = Whole_process::median_seconds(w.bff);
+    const double om = Whole_process::median_rss_mb(w.ours), bm = Whole_process::median_rss_mb(w.bff);
+    std::string config = "-";
+    if(!w.ours_stages.empty())
+    {
+      const Cli_stages& s = w.ours_stages.front();
+      config = s.solver + ", " + s.border + ", " + s.distance + ", " + s.kept;
+    }
+    std::printf("| %s | %zu | %zu | %s | %s | %s | %s | %s | %s | %s | %s, %s | %s |\n", r.name.c_str(), r.V, r.F,
+                seconds_cell(ot).c_str(), fmt("%.0f", om).c_str(), seconds_cell(bt).c_str(), fmt("%.0f", bm).c_str(),
+                fmt("%.2f", ratio(bt, ot)).c_str(), fmt("%.2f", ratio(om, bm)).c_str(), config.c_str(),
+                fmt("%.2f", w.load_before).c_str(), fmt("%.2f", w.load_after).c_str(),
+                w.failure.empty() ? "none" : w.failure.c_str());
+  }
+
+  std::printf("\n### Whole process: stages of our run (seconds, medians of its --json)\n\n");
+  std::printf("| mesh | V | process | read | prep. | conformal border | center | distances | border map | layouts |"
+              " repair | output | parameterization total | quality | write | rest (process - read - total -"
+              " quality - write) | factorizations | factorization s |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for(const Mesh_result& r : results)
+  {
+    const Whole_process& w = r.whole;
+    if(!w.planned || w.ours_stages.empty())
+      continue;
+    const std::vector<Cli_stages>& v = w.ours_stages;
+    const double process = Whole_process::median_seconds(w.ours);
+    const double read = stage_median(v, &Cli_stages::read), total = stage_median(v, &Cli_stages::total),
+                 quality = stage_median(v, &Cli_stages::quality), write = stage_median(v, &Cli_stages::write);
+    std::printf("| %s | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+                r.name.c_str(), r.V, seconds_cell(process).c_str(), seconds_cell(read).c_str(),
+                seconds_cell(stage_median(v, &Cli_stages::preparation)).c_str(),
+                seconds_cell(stage_median(v, &Cli_stages::conformal_border)).c_str(),
+                seconds_cell(stage_median(v, &Cli_stages::center)).c_str(),
+                seconds_cell(stage_median(v, &Cli_stages::distances)).c_str(),
+                seconds_cell(stage_median(v, &Cli_stages::border_map)).c_str(),
+                seconds_cell(stage_median(v, &Cli_stages::interior)).c_str(),
+                seconds_cell(stage_median(v, &Cli_stages::repair)).c_str(),
+                seconds_cell(stage_median(v, &Cli_stages::output)).c_str(), seconds_cell(total).c_str(),
+                seconds_cell(quality).c_str(), seconds_cell(write).c_str(),
+                seconds_cell(process - read - total - quality - write).c_str(),
+                fmt("%.0f", stage_median(v, &Cli_stages::factorizations)).c_str(),
+                seconds_cell(stage_median(v, &Cli_stages::factorization_seconds)).c_str());
+  }
 }
 
 // ---------------------------------------------------------------------------------------
-// Targets of the issue, on this run's numbers
+// Targets, on this run's numbers
 
 const char* verdict(bool met, bool any) { return !any ? "not evaluated" : (met ? "MET" : "NOT MET"); }
 
-void print_floor_target(const std::vector<Mesh_result>& results, int m, int s)
+// Every row of >= min_vertices: method time / floor <= bound.
+void print_floor_target(const std::vector<Mesh_result>& results, int m, std::size_t min_vertices, double bound)
 {
   bool any = false, met = true;
-  double worst = 0.;
-  std::string where;
+  std::string list;
   for(const Mesh_result& r : results)
   {
-    if(r.V < 5000)
-      continue;
-    const double q = ratio(time_of(r, m), r.floor(s));
-    if(std::isnan(q))
-      continue;
-    any = true;
-    if(q > worst) { worst = q; where = r.name; }
-    met = met && q <= 2.5;
-  }
-  std::printf("- time <= 2.5x floor on meshes of >= 5k vertices, %s: %s", method_name(m), verdict(met, any));
-  if(any)
-    std::printf(" (worst %.2fx, %s)", worst, where.c_str());
-  std::printf("\n");
-}
-
-void print_dcp_target(const std::vector<Mesh_result>& results, int m)
-{
-  bool any = false, met = true;
-  double worst = std::numeric_limits<double>::infinity();
-  std::string where;
-  for(const Mesh_result& r : results)
-  {
-    if(r.V < 30000)
-      continue;
-    const double q = ratio(time_of(r, CGAL_DCP), time_of(r, m));
-    if(std::isnan(q))
-      continue;
-    any = true;
-    if(q < worst) { worst = q; where = r.name; }
-    met = met && q >= 5.;
-  }
-  std::printf("- >= 5x faster than CGAL DCP (default solver) on meshes of >= 30k vertices, %s: %s", method_name(m),
-              verdict(met, any));
-  if(any)
-    std::printf(" (least %.1fx, %s)", worst, where.c_str());
-  std::printf("\n");
-}
-
-void print_memory_target(const std::vector<Mesh_result>& results, int m, std::size_t min_vertices)
-{
-  bool any = false, met = true;
-  double worst = 0.;
-  std::string where;
-  for(const Mesh_result& r : results)
-  {
-    const double q = ratio(memory_of(r, m), memory_of(r, CGAL_DCP));
+    const double q = floor_ratio(r, m);
     if(r.V < min_vertices || std::isnan(q))
       continue;
     any = true;
-    if(q > worst) { worst = q; where = r.name; }
-    met = met && q <= 1.5;
+    met = met && q <= bound;
+    list += (list.empty() ? "" : ", ") + r.name + " " + fmt("%.2f", q) + "x";
   }
-  std::printf("- peak memory <= 1.5x CGAL DCP's, meshes of >= %zu vertices, %s: %s", min_vertices, method_name(m),
-              verdict(met, any));
-  if(any)
-    std::printf(" (worst %.2fx, %s)", worst, where.c_str());
-  std::printf("\n");
+  std::printf("- in-process <= %.1fx the floor at every size >= %zu vertices, %s: %s%s%s%s\n", bound, min_vertices,
+              method_name(m), verdict(met, any), any ? " (" : "", list.c_str(), any ? ")" : "");
 }
 
-void print_targets(const std::vector<Mesh_result>& results, bool scale)
+void print_issue13_whole_targets(const std::vector<Mesh_result>& results)
 {
-  std::printf("\n### Targets (this run)\n\n");
-  for(int m : {OURS_LDLT, OURS_CHOLMOD, OURS_LDLT_SEQ, OURS_CHOLMOD_SEQ})
-    if(method_available(m))
-      print_floor_target(results, m, (m == OURS_LDLT || m == OURS_LDLT_SEQ) ? LDLT : CHOLMOD);
-  for(int m : {OURS_LDLT, OURS_CHOLMOD})
-    if(method_available(m))
-      print_dcp_target(results, m);
-  if(scale)
-    for(int m : {OURS_CHOLMOD, OURS_CHOLMOD_SEQ})
+  for(const Mesh_result& r : results)
+  {
+    const Whole_process& w = r.whole;
+    if(!w.planned)
+      continue;
+    const double ot = Whole_process::median_seconds(w.ours), bt = Whole_process::median_seconds(w.bff);
+    const double om = Whole_process::median_rss_mb(w.ours), bm = Whole_process::median_rss_mb(w.bff);
+    if(r.V >= 600000 && r.V < 1000000)
     {
-      if(!method_available(m))
-        continue;
-      bool any = false, met = true;
-      for(const Mesh_result& r : results)
-        if(r.V >= 600000 && r.methods[m].ok())
-        {
-          any = true;
-          met = met && r.methods[m].time() <= 10.;
-          std::printf("- %zu-vertex mesh in <= 10 s, %s: %s (%.2f s)\n", r.V, method_name(m),
-                      verdict(r.methods[m].time() <= 10., true), r.methods[m].time());
-        }
-      if(!any)
-        std::printf("- 700k-vertex mesh in <= 10 s, %s: not evaluated\n", method_name(m));
+      std::printf("- whole run at %zu vertices <= 6 s: %s (%s s)\n", r.V, verdict(ot <= 6., !std::isnan(ot)),
+                  seconds_cell(ot).c_str());
+      const double speed = ratio(bt, ot), memory = ratio(om, bm);
+      std::printf("- >= 5x faster than BFF at %zu vertices: %s (%sx)\n", r.V, verdict(speed >= 5., !std::isnan(speed)),
+                  fmt("%.2f", speed).c_str());
+      std::printf("- peak memory <= 0.75x BFF's at %zu vertices: %s (%sx: %s against %s MiB)\n", r.V,
+                  verdict(memory <= 0.75, !std::isnan(memory)), fmt("%.2f", memory).c_str(), fmt("%.0f", om).c_str(),
+                  fmt("%.0f", bm).c_str());
     }
-  for(std::size_t min_vertices : {std::size_t(0), std::size_t(5000)})
-    for(int m : {OURS_LDLT, OURS_CHOLMOD})
-      if(method_available(m))
-        print_memory_target(results, m, min_vertices);
+    if(r.V >= 1500000)
+    {
+      const double gb = om * 1024. * 1024. / 1e9;
+      std::printf("- whole run at %zu vertices <= 20 s: %s (%s s)\n", r.V, verdict(ot <= 20., !std::isnan(ot)),
+                  seconds_cell(ot).c_str());
+      std::printf("- whole run at %zu vertices <= 2.5 GB: %s (%s GB = %s MiB)\n", r.V, verdict(gb <= 2.5, !std::isnan(gb)),
+                  fmt("%.2f", gb).c_str(), fmt("%.0f", om).c_str());
+    }
+  }
+}
+
+// Issue 3's targets, with ours = the automatic border.
+void print_issue3_targets(const std::vector<Mesh_result>& results)
+{
+  for(int m : {AUTO_LDLT, AUTO_CHOLMOD})
+  {
+    if(!method_available(m))
+      continue;
+    print_floor_target(results, m, 5000, 2.5);
+    bool any = false, met = true;
+    double least = std::numeric_limits<double>::infinity(), worst_memory = 0.;
+    bool any_memory = false, met_memory = true;
+    for(const Mesh_result& r : results)
+    {
+      const double q = ratio(time_of(r, CGAL_DCP), time_of(r, m));
+      if(r.V >= 30000 && !std::isnan(q))
+      {
+        any = true;
+        least = (std::min)(least, q);
+        met = met && q >= 5.;
+      }
+      const double mq = ratio(memory_of(r, m), memory_of(r, CGAL_DCP));
+      if(!std::isnan(mq))
+      {
+        any_memory = true;
+        worst_memory = (std::max)(worst_memory, mq);
+        met_memory = met_memory && mq <= 1.5;
+      }
+    }
+    std::printf("- >= 5x faster than CGAL DCP at >= 30k vertices, %s: %s", method_name(m), verdict(met, any));
+    if(any)
+      std::printf(" (least %.1fx)", least);
+    std::printf("\n- call's peak memory <= 1.5x CGAL DCP's, %s: %s", method_name(m), verdict(met_memory, any_memory));
+    if(any_memory)
+      std::printf(" (worst %.2fx)", worst_memory);
+    std::printf("\n");
+  }
+}
+
+void print_targets(const std::vector<Mesh_result>& results)
+{
+  std::printf("\n### Targets of issue 13 (this run)\n\n");
+  for(int m : {AUTO_LDLT, AUTO_CHOLMOD})
+    if(method_available(m))
+      print_floor_target(results, m, 45000, 1.3);
+  print_issue13_whole_targets(results);
+  std::printf("\n### Targets of issue 3 (ours = the automatic border; this run)\n\n");
+  print_issue3_targets(results);
 }
 
 // ---------------------------------------------------------------------------------------
+// Hidden modes of the child processes
 
-// The child process of run_in_child(): argv = --child METHOD MESH_FILE LEVELS QUALITY FD.
+// --child FD METHOD MESH_FILE LEVELS QUALITY (run_in_child())
 int child_main(char** argv)
 {
   Child_result r;
-  const int m = std::atoi(argv[2]);
-  const int levels = std::atoi(argv[4]);
-  const bool with_quality = std::atoi(argv[5]) != 0;
-  const int fd = std::atoi(argv[6]);
+  const int fd = std::atoi(argv[2]);
+  const int m = std::atoi(argv[3]);
+  const int levels = std::atoi(argv[5]);
+  const bool with_quality = std::atoi(argv[6]) != 0;
 
   Mesh mesh;
-  if(m < 0 || m >= NUMBER_OF_METHODS || !method_available(m) || !CGAL::IO::read_polygon_mesh(argv[3], mesh))
+  if(m < 0 || m >= NUMBER_OF_METHODS || !method_available(m) || !CGAL::IO::read_polygon_mesh(argv[4], mesh))
     return 1;
   for(int level = 0; level < levels; ++level)
   {
@@ -998,12 +1430,190 @@ int child_main(char** argv)
   return write_all(fd, &r, sizeof(r)) ? 0 : 1;
 }
 
+// --spawn FD STDOUT_FILE STDERR_FILE PROGRAM ARGS... (run_process()): this process is small
+// (freshly exec()ed), so the program fork()ed from it starts with a small high-water mark.
+int spawn_main(int argc, char** argv)
+{
+  Process_result r;
+  const int fd = std::atoi(argv[2]);
+  const char* out = argv[3];
+  const char* err = argv[4];
+  const Clock::time_point start = Clock::now();
+  const pid_t pid = ::fork();
+  if(pid < 0)
+    return 1;
+  if(pid == 0)
+  {
+    ::close(fd);
+    const int o = ::open(out, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int e = std::strcmp(out, err) == 0 ? o : ::open(err, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if(o < 0 || e < 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0)
+      ::_exit(126);
+    std::vector<char*> args(argv + 5, argv + argc);
+    args.push_back(nullptr);
+    ::execv(argv[5], args.data());
+    ::_exit(127);
+  }
+  int wstatus = 0;
+  rusage usage;
+  std::memset(&usage, 0, sizeof(usage));
+  while(::wait4(pid, &wstatus, 0, &usage) < 0)
+    if(errno != EINTR)
+      return 1;
+  r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  r.ran = true;
+  r.exit_status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : -1;
+  r.maxrss_kb = usage.ru_maxrss;
+  return write_all(fd, &r, sizeof(r)) ? 0 : 1;
+}
+
+// ---------------------------------------------------------------------------------------
+// The two modes
+
 int usage(const char* program)
 {
   std::cerr << "usage: " << program
-            << " [--runs N] [--mesh NAME]... [--no-memory] [--scale [--scale-mesh FILE] [--levels L]"
-               " [--first-level K] [--dcp-cap SECONDS]] [MESH_DIR]\n";
+            << " [--runs N] [--mesh NAME]... [--no-memory] [MESH_DIR]\n"
+               "       "
+            << program
+            << " --scale [--scale-case FILE:K[,K...]]... [--runs N] [--large-runs N] [--no-memory]"
+               " [--dcp-cap SECONDS] [--cli PATH|none] [--bff PATH|none] [--whole-runs N] [--work DIR] [MESH_DIR]\n";
   return 2;
+}
+
+struct Scale_case
+{
+  std::string file;
+  std::vector<int> levels;
+};
+
+bool parse_scale_case(const std::string& spec, Scale_case& c)
+{
+  const std::size_t colon = spec.rfind(':');
+  if(colon == std::string::npos || colon == 0)
+    return false;
+  c.file = spec.substr(0, colon);
+  std::stringstream levels(spec.substr(colon + 1));
+  std::string k;
+  while(std::getline(levels, k, ','))
+  {
+    char* stop = nullptr;
+    const long level = std::strtol(k.c_str(), &stop, 10);
+    if(k.empty() || *stop != '\0' || level < 0 || level > 6)
+      return false;
+    c.levels.push_back(static_cast<int>(level));
+  }
+  std::sort(c.levels.begin(), c.levels.end());
+  return !c.levels.empty();
+}
+
+int run_scale_mode(const std::string& dir, std::vector<Scale_case> cases, Plan& plan, std::vector<Mesh_result>& results)
+{
+  if(cases.empty())
+    cases = {Scale_case{"bimba_i.obj", {0, 1, 2}}, Scale_case{"mask.off", {3}}};
+  for(int m : {AUTO_LDLT, AUTO_CHOLMOD, MBPPP_CHOLMOD})
+    if(method_available(m))
+      plan.timed.push_back(m);
+  if(plan.cap_seconds > 0.)
+    plan.timed_in_child.push_back(CGAL_DCP);
+  const bool whole = !plan.cli.empty() || !plan.bff.empty();
+  std::error_code ec;
+  if(whole && !std::filesystem::create_directories(plan.work, ec) && ec)
+  {
+    std::cerr << "error: cannot create '" << plan.work << "'\n";
+    return 1;
+  }
+  for(const Scale_case& c : cases)
+  {
+    const std::string path = std::filesystem::exists(c.file) ? c.file : (std::filesystem::path(dir) / c.file).string();
+    Mesh mesh;
+    if(!CGAL::IO::read_polygon_mesh(path, mesh) || faces(mesh).empty() || !not_a_disk(mesh).empty())
+    {
+      std::cerr << "error: '" << path << "' is not a readable disk mesh\n";
+      return 1;
+    }
+    const std::string base = std::filesystem::path(path).filename().string();
+    int level = 0;
+    for(int target : c.levels)
+    {
+      for(; level < target; ++level)
+      {
+        Mesh refined;
+        if(!midpoint_subdivision(mesh, refined))
+        {
+          std::cerr << "error: subdivision failed\n";
+          return 1;
+        }
+        mesh = std::move(refined);
+      }
+      const std::string name = base + " x" + std::to_string(target);
+      std::cerr << name << ": V " << num_vertices(mesh) << ", F " << num_faces(mesh) << ", load "
+                << load_average() << std::endl;
+      results.push_back(measure_mesh(name, mesh, Mesh_source{path, target}, plan));
+      if(whole)
+      {
+        const std::string stem = std::filesystem::path(base).stem().string() + "_x" + std::to_string(target);
+        const std::string obj = (std::filesystem::path(plan.work) / (stem + ".obj")).string();
+        if(!write_obj_file(mesh, obj))
+        {
+          std::cerr << "error: cannot write '" << obj << "'\n";
+          return 1;
+        }
+        measure_whole_process(obj, stem, plan, results.back().whole);
+      }
+    }
+  }
+  return 0;
+}
+
+int run_directory_mode(const std::string& dir, const std::vector<std::string>& only, Plan& plan,
+                       std::vector<Mesh_result>& results, std::vector<std::string>& skipped)
+{
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for(const auto& entry : std::filesystem::directory_iterator(dir, ec))
+  {
+    const std::string ext = entry.path().extension().string();
+    const std::string file = entry.path().filename().string();
+    if((ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl") &&
+       (only.empty() || std::find(only.begin(), only.end(), file) != only.end()))
+      files.push_back(entry.path());
+  }
+  if(ec || files.empty())
+  {
+    std::cerr << "error: no mesh in '" << dir << "'\n";
+    return 1;
+  }
+  std::sort(files.begin(), files.end());
+  for(int m = 0; m < NUMBER_OF_METHODS; ++m)
+    if(method_available(m))
+      plan.timed.push_back(m);
+  for(const auto& path : files)
+  {
+    const std::string name = path.filename().string();
+    Mesh mesh;
+    if(!CGAL::IO::read_polygon_mesh(path.string(), mesh) || faces(mesh).empty())
+    {
+      skipped.push_back(name + " (not readable as a polygon mesh)");
+      continue;
+    }
+    const std::string why = not_a_disk(mesh);
+    if(!why.empty())
+    {
+      skipped.push_back(name + " (" + why + ")");
+      continue;
+    }
+    std::cerr << name << ": V " << num_vertices(mesh) << ", F " << num_faces(mesh) << std::endl;
+    results.push_back(measure_mesh(name, mesh, Mesh_source{path.string(), 0}, plan));
+  }
+  return 0;
+}
+
+std::string program_option(const std::string& value)
+{
+  if(value == "none")
+    return "";
+  return value;
 }
 
 } // namespace
@@ -1012,122 +1622,74 @@ int main(int argc, char** argv)
 {
   if(argc == 7 && std::string(argv[1]) == "--child")
     return child_main(argv);
+  if(argc >= 6 && std::string(argv[1]) == "--spawn")
+    return spawn_main(argc, argv);
   std::string dir = MBP_MESH_DIR;
-  std::string scale_mesh;
   std::vector<std::string> only;
+  std::vector<Scale_case> cases;
   Plan plan;
+  plan.cap_seconds = 600.;
+  plan.cli = MBP_CLI_PROGRAM;
+  plan.bff = MBP_BFF_PROGRAM;
+  plan.work = "/tmp/mbp-scale";
   bool scale = false;
-  int levels = 2, first_level = 1;
-  double dcp_cap = 900.;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
     const bool has_value = i + 1 < argc;
-    if(a == "--runs" && has_value)            plan.runs = std::atoi(argv[++i]);
-    else if(a == "--mesh" && has_value)       only.push_back(argv[++i]);
-    else if(a == "--no-memory")               plan.memory = false;
-    else if(a == "--scale")                   scale = true;
-    else if(a == "--scale-mesh" && has_value) scale_mesh = argv[++i];
-    else if(a == "--levels" && has_value)     levels = std::atoi(argv[++i]);
-    else if(a == "--first-level" && has_value) first_level = std::atoi(argv[++i]);
-    else if(a == "--dcp-cap" && has_value)    dcp_cap = std::atof(argv[++i]);
-    else if(!a.empty() && a[0] == '-')        return usage(argv[0]);
-    else                                      dir = a;
+    if(a == "--runs" && has_value)             plan.runs = std::atoi(argv[++i]);
+    else if(a == "--large-runs" && has_value)  plan.large_runs = std::atoi(argv[++i]);
+    else if(a == "--mesh" && has_value)        only.push_back(argv[++i]);
+    else if(a == "--no-memory")                plan.memory = false;
+    else if(a == "--scale")                    scale = true;
+    else if(a == "--scale-case" && has_value)
+    {
+      Scale_case c;
+      if(!parse_scale_case(argv[++i], c))
+        return usage(argv[0]);
+      cases.push_back(c);
+    }
+    else if(a == "--dcp-cap" && has_value)     plan.cap_seconds = std::atof(argv[++i]);
+    else if(a == "--cli" && has_value)         plan.cli = program_option(argv[++i]);
+    else if(a == "--bff" && has_value)         plan.bff = program_option(argv[++i]);
+    else if(a == "--whole-runs" && has_value)  plan.whole_runs = std::atoi(argv[++i]);
+    else if(a == "--work" && has_value)        plan.work = argv[++i];
+    else if(!a.empty() && a[0] == '-')         return usage(argv[0]);
+    else                                       dir = a;
   }
-  if(plan.runs < 1 || levels < 1 || first_level < 1 || first_level > levels || !(dcp_cap > 0.))
+  if(plan.runs < 1 || plan.large_runs < 1 || plan.whole_runs < 1 || !(plan.cap_seconds >= 0.))
     return usage(argv[0]);
+  for(std::string* program : {&plan.cli, &plan.bff})
+    if(!program->empty() && ::access(program->c_str(), X_OK) != 0)
+    {
+      std::cerr << "note: '" << *program << "' is not an executable: its whole-process column stays empty\n";
+      program->clear();
+    }
   if(plan.runs < 5)
     std::cerr << "note: fewer than 5 runs per method\n";
 
   std::vector<Mesh_result> results;
   std::vector<std::string> skipped;
-
-  if(scale)
-  {
-    if(scale_mesh.empty())
-      scale_mesh = (std::filesystem::path(dir) / "bimba_i.obj").string();
-    Mesh mesh;
-    if(!CGAL::IO::read_polygon_mesh(scale_mesh, mesh) || faces(mesh).empty() || !not_a_disk(mesh).empty())
-    {
-      std::cerr << "error: '" << scale_mesh << "' is not a readable disk mesh\n";
-      return 1;
-    }
-    for(int m = OURS_LDLT; m <= OURS_CHOLMOD_SEQ; ++m)
-      if(method_available(m))
-        plan.timed.push_back(m);
-    plan.timed_in_child.push_back(CGAL_DCP);
-    plan.cap_seconds = dcp_cap;
-    const std::string base = std::filesystem::path(scale_mesh).filename().string();
-    for(int level = 1; level <= levels; ++level)
-    {
-      Mesh refined;
-      if(!midpoint_subdivision(mesh, refined))
-      {
-        std::cerr << "error: subdivision failed\n";
-        return 1;
-      }
-      mesh = std::move(refined);
-      if(level < first_level)
-        continue;
-      const std::string name = base + " x" + std::to_string(level);
-      std::cerr << name << ": V " << num_vertices(mesh) << ", F " << num_faces(mesh) << std::endl;
-      results.push_back(measure_mesh(name, mesh, Mesh_source{scale_mesh, level}, plan));
-    }
-  }
-  else
-  {
-    std::vector<std::filesystem::path> files;
-    std::error_code ec;
-    for(const auto& entry : std::filesystem::directory_iterator(dir, ec))
-    {
-      const std::string ext = entry.path().extension().string();
-      const std::string file = entry.path().filename().string();
-      if((ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl") &&
-         (only.empty() || std::find(only.begin(), only.end(), file) != only.end()))
-        files.push_back(entry.path());
-    }
-    if(ec || files.empty())
-    {
-      std::cerr << "error: no mesh in '" << dir << "'\n";
-      return 1;
-    }
-    std::sort(files.begin(), files.end());
-    for(int m = 0; m < NUMBER_OF_METHODS; ++m)
-      if(method_available(m))
-        plan.timed.push_back(m);
-    for(const auto& path : files)
-    {
-      const std::string name = path.filename().string();
-      Mesh mesh;
-      if(!CGAL::IO::read_polygon_mesh(path.string(), mesh) || faces(mesh).empty())
-      {
-        skipped.push_back(name + " (not readable as a polygon mesh)");
-        continue;
-      }
-      const std::string why = not_a_disk(mesh);
-      if(!why.empty())
-      {
-        skipped.push_back(name + " (" + why + ")");
-        continue;
-      }
-      std::cerr << name << ": V " << num_vertices(mesh) << ", F " << num_faces(mesh) << std::endl;
-      results.push_back(measure_mesh(name, mesh, Mesh_source{path.string(), 0}, plan));
-    }
-  }
+  const int status = scale ? run_scale_mode(dir, cases, plan, results)
+                           : run_directory_mode(dir, only, plan, results, skipped);
+  if(status != 0)
+    return status;
 
 #ifdef MBP_WITH_CHOLMOD
   std::printf("Solvers: Eigen SimplicialLDLT; CHOLMOD supernodal (AMD)\n");
 #else
   std::printf("Solvers: Eigen SimplicialLDLT (built without CHOLMOD: its columns are empty)\n");
 #endif
-  print_time_table(results, !scale, plan.runs);
-  if(scale)
-    std::printf("\nCGAL DCP: one run in a child process, killed after %.0f s (\"> cap\").\n", dcp_cap);
+  print_time_table(results);
+  if(scale && plan.cap_seconds > 0.)
+    std::printf("\nCGAL DCP: one run in a child process, killed after %.0f s (\"> cap\").\n", plan.cap_seconds);
   if(plan.memory || scale)
-    print_memory_table(results, !scale);
-  print_quality_table(results, !scale);
-  print_stage_table(results);
-  print_targets(results, scale);
+    print_memory_table(results);
+  print_quality_table(results);
+  print_stage_table(results, scale ? 0 : 20000);
+  if(scale)
+    print_whole_process_tables(results, plan);
+  print_targets(results);
   if(!skipped.empty())
   {
     std::printf("\nSkipped (not disks):");
