@@ -77,9 +77,10 @@ run_suite() {  # suite, log file
   exe="$(find "$build" -type f -name "$1" -perm -u+x | head -n 1)"
   (cd "$build" && timeout "$timeout_s" "$exe" "--run_test=!@extended" --log_level=error --report_level=short) > "$2.run.txt" 2>&1
   local rc=$?
+  # Boost.Test exits with 201 (a failed check) or 200 (an exception); 128 + N is signal N
   if [ $rc -eq 0 ]; then echo pass
   elif [ $rc -eq 124 ]; then echo timeout
-  elif [ $rc -gt 128 ]; then echo crash
+  elif [ $rc -gt 128 ] && [ $rc -lt 200 ]; then echo crash
   else echo fail
   fi
 }

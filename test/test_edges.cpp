@@ -397,6 +397,7 @@ struct Reference
   std::map<int, SMP::Parameterization_quality> quality;
   std::map<int, vertex_descriptor> center;
   std::vector<double> bpdm, pdm, geodesic, border_distances, edge_lengths, closed_lengths;
+  double polar_scale = 0.;                            // UV length per unit of the mesh's length
 };
 
 const Full::Border_choice choices[] = {Full::MEASURED_BORDER, Full::CONFORMAL_BORDER, Full::AUTOMATIC_BORDER};
@@ -441,7 +442,19 @@ Reference measure_everything(Mesh& m)
     r.quality[choice] = SMP::measure_quality(m, faces(m), uv);
     r.center[choice] = p.center();
     if(choice == Full::MEASURED_BORDER)
-      r.border_distances = p.border_parameterizer().last_record().border_distances;
+    {
+      const auto& record = p.border_parameterizer().last_record();
+      r.border_distances = record.border_distances;
+      r.polar_scale = record.polar_scale;
+      // the record's polar map gives the border UVs: origin + scale * distance * direction
+      for(std::size_t k = 0; k < record.border_vertices.size(); ++k)
+      {
+        const double radius = record.polar_scale * record.border_distances[k];
+        const K::Point_2 q = uv[record.border_vertices[k]];
+        BOOST_TEST(std::abs(q.x() - (record.polar_origin.x() + radius * std::cos(-record.border_angles[k]))) <= 1e-12);
+        BOOST_TEST(std::abs(q.y() - (record.polar_origin.y() + radius * std::sin(-record.border_angles[k]))) <= 1e-12);
+      }
+    }
     m.remove_property_map(uv);
   }
   SMP::Conformal_border_parameterizer_3<Mesh> conformal;
@@ -532,6 +545,8 @@ BOOST_AUTO_TEST_CASE(results_do_not_depend_on_the_scale_of_the_mesh)
         check_scaled_lengths(scaled.geodesic, reference.geodesic, factor, power_of_two, "geodesic distance map");
         check_scaled_lengths(scaled.border_distances, reference.border_distances, factor, power_of_two,
                              "measured border record: border distances");
+        check_scaled_lengths(std::vector<double>(1, 1. / scaled.polar_scale), std::vector<double>(1, 1. / reference.polar_scale),
+                             factor, power_of_two, "measured border record: polar scale (UV length per unit of length)");
         check_scaled_lengths(scaled.edge_lengths, reference.edge_lengths, factor, power_of_two,
                              "conformal border record: edge lengths");
         check_scaled_lengths(scaled.closed_lengths, reference.closed_lengths, factor, power_of_two,

@@ -149,7 +149,7 @@ public:
     /// UV position of the polar origin: border vertex `k` is at
     /// `polar_origin + polar_scale * border_distances[k] * (cos(-phi_k), sin(-phi_k))`
     Eigen::Vector2d polar_origin = Eigen::Vector2d(0.5, 0.5);
-    /// UV length per unit of distance
+    /// UV length per unit of distance (in the mesh's unit of length, as `border_distances`)
     double polar_scale = 1.;
     /// whether the border polygon was verified strictly convex
     bool strictly_convex = false;
@@ -284,7 +284,7 @@ public:
         d *= patch.length_unit();
       record.border_angles = polar.angles;
       record.polar_origin = polar.origin;
-      record.polar_scale = polar.scale;
+      record.polar_scale = polar.scale / patch.length_unit();  // per unit of the mesh's length
       record.strictly_convex = polar.strictly_convex;
       uv = polar.uv;
     }
