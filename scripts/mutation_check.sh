@@ -16,8 +16,8 @@
 #     # breaks: TEXT         what the change breaks
 # The script:
 #  1. exports the committed tree (git archive HEAD; MBP_MUTATION_SOURCE=worktree copies the
-#     working tree's tracked files instead) into a scratch directory, never touching the
-#     repository's own files, and configures one Release build there;
+#     working tree's tracked files instead) into a scratch directory outside the repository
+#     (the repository's own files are never changed), and configures one Release build there;
 #  2. builds and runs every suite the mutants name on the unchanged code (each must pass);
 #  3. for each mutant: applies it to the scratch copy (it must change exactly one line),
 #     then builds and runs its suites one at a time, core tier only, stopping at the first
@@ -29,7 +29,7 @@
 # Environment: MBP_MUTATION_DIR (scratch, default /tmp/mbp-mutation-$USER), MBP_JOBS (make
 # jobs, default 2), MBP_MUTATION_TIMEOUT (seconds per suite run, default 900),
 # MBP_MUTATION_SOURCE (head | worktree, default head), MBP_MUTATION_KEEP=1 (keep the scratch
-# build for a later run: the configure and the unchanged build are then reused).
+# build for a later run, which then recompiles only what changed).
 # Exit status: 0 when every mutant was killed, 1 when one survived, 2 on an error (a mutant
 # that does not apply, a suite that fails on the unchanged code).
 set -uo pipefail
@@ -53,16 +53,27 @@ if [ "$#" -gt 0 ]; then mutants=("$@"); else mutants=("$repo"/test/mutants/*.sed
 field() { sed -n "s/^# $2: //p" "$1" | head -n 1; }
 
 # -- 1. scratch copy and configure ------------------------------------------------------------
+# The sources are exported afresh, then copied over the previous scratch copy file by file
+# where they differ, so that a kept build (MBP_MUTATION_KEEP=1) recompiles only what changed.
 mkdir -p "$scratch" "$log"
-if [ "${MBP_MUTATION_KEEP:-0}" != 1 ] || [ ! -d "$src" ]; then
-  rm -rf "$src"
-  mkdir -p "$src"
-  if [ "$source_mode" = worktree ]; then
-    (cd "$repo" && git ls-files -z | xargs -0 cp --parents -t "$src")
-  else
-    git -C "$repo" archive --format=tar HEAD | tar -x -C "$src"
-  fi
+export_dir="$scratch/export"
+rm -rf "$export_dir"
+mkdir -p "$export_dir" "$src"
+if [ "$source_mode" = worktree ]; then
+  (cd "$repo" && git ls-files -z | xargs -0 cp --parents -t "$export_dir")
+else
+  git -C "$repo" archive --format=tar HEAD | tar -x -C "$export_dir"
 fi
+(cd "$export_dir" && find . -type f -print0) | while IFS= read -r -d '' f; do
+  if ! cmp -s "$export_dir/$f" "$src/$f"; then
+    mkdir -p "$(dirname "$src/$f")"
+    cp "$export_dir/$f" "$src/$f"
+  fi
+done
+(cd "$src" && find . -type f -print0) | while IFS= read -r -d '' f; do
+  [ -e "$export_dir/$f" ] || rm -f "$src/$f"
+done
+rm -rf "$export_dir"
 echo "mutation_check: sources ($source_mode) in $src, build in $build"
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DMBP_BUILD_DOC=OFF -DMBP_BUILD_BENCHMARK=OFF \
       -DMBP_BUILD_EXAMPLES=OFF > "$log/configure.txt" 2>&1 || { echo "configure failed: $log/configure.txt" >&2; exit 2; }
