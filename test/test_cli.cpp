@@ -1654,3 +1654,69 @@ BOOST_AUTO_TEST_CASE(long_output_names)
   BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off", obj, svg}));
   BOOST_TEST(read_obj(scratch.work / obj).f.size() == 8u);
 }
+
+BOOST_AUTO_TEST_CASE(equal_border_loops_are_chosen_by_the_library_rule)
+{
+  // An open tube whose two end loops have exactly the same length. The program takes the
+  // library's main_border() (through find_longest_border()): among loops of equal length the
+  // one of the vertex that comes first in the file, from that vertex; so the tube and its
+  // copies scaled, mirrored, translated or rotated give the same border loop from the same
+  // vertex (the longest loop alone is a matter of rounding, and its start was the first
+  // border halfedge found). With --border=circle the start is the vertex at angle 0 of the
+  // circle, the largest u.
+  const int n = 31, rows = 5;
+  mbp_test::Soup tube;
+  for(int j = 0; j <= rows; ++j)
+    for(int i = 0; i < n; ++i)
+      tube.points.push_back({{std::cos(2. * CGAL_PI * i / n), std::sin(2. * CGAL_PI * i / n), 2. * j / rows}});
+  for(int j = 0; j < rows; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      auto id = [](int a, int b) { return std::size_t(b * n + a % n); };
+      tube.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      tube.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  const double c = std::cos(1.), s = std::sin(1.);
+  const std::vector<std::pair<std::string, std::function<std::array<double, 3>(const std::array<double, 3>&)> > > transforms{
+    {"identity", [](const std::array<double, 3>& p) { return p; }},
+    {"scaled by 1e-6", [](const std::array<double, 3>& p) { return std::array<double, 3>{{p[0] * 1e-6, p[1] * 1e-6, p[2] * 1e-6}}; }},
+    {"mirrored", [](const std::array<double, 3>& p) { return std::array<double, 3>{{-p[0], p[1], p[2]}}; }},
+    {"translated by 1e6", [](const std::array<double, 3>& p) { return std::array<double, 3>{{p[0] + 1e6, p[1] + 1e6, p[2] + 1e6}}; }},
+    {"rotated", [c, s](const std::array<double, 3>& p) { return std::array<double, 3>{{c * p[0] - s * p[2], p[1], s * p[0] + c * p[2]}}; }}};
+  Scratch scratch;
+  std::size_t first_count = 0, first_start = 0;
+  for(const auto& transform : transforms)
+    BOOST_TEST_CONTEXT(transform.first)
+    {
+      mbp_test::Soup moved = tube;
+      for(auto& p : moved.points)
+        p = transform.second(p);
+      scratch.write("tube.off", exact_off_text(moved));
+      const Run r = scratch.run({"tube.off", "tube.obj", "--json", "--border=circle"});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      const std::size_t count = parse_json(r.out).get<std::size_t>("border.vertices");
+      const Obj obj = read_obj(scratch.work / "tube.obj", true);
+      BOOST_REQUIRE_EQUAL(obj.v.size(), tube.points.size());
+      // the input vertex of every 'vt'
+      std::vector<std::size_t> vertex_of(obj.vt.size(), 0);
+      for(std::size_t f = 0; f < obj.f.size(); ++f)
+        for(std::size_t k = 0; k < 3; ++k)
+          vertex_of[obj.ft[f][k]] = obj.f[f][k];
+      std::size_t start = 0;
+      for(std::size_t i = 0; i < obj.vt.size(); ++i)
+        if(obj.vt[i][0] > obj.vt[start][0])
+          start = i;
+      start = vertex_of[start];
+      BOOST_TEST_MESSAGE("border of " << count << " vertices from vertex " << start << ", " << obj.vt.size() << " UVs");
+      if(obj.vt.size() == obj.v.size())  // not cut: the bottom loop
+        BOOST_TEST(count == std::size_t(n));
+      BOOST_TEST(start == 0u);  // vertex 0 comes first
+      if(transform.first == "identity")
+      {
+        first_count = count;
+        first_start = start;
+      }
+      BOOST_TEST(count == first_count);
+      BOOST_TEST(start == first_start);
+    }
+}

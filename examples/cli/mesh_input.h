@@ -19,6 +19,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/main_border.h>
 
 #include "mesh_reader.h"
 #include "text_output.h"
@@ -366,15 +367,17 @@ private:
 };
 
 /// sets `bhd` to a halfedge of the longest border of `tm` (a mesh, or a `Seam_mesh`, whose
-/// seams are on its border) and `border_length` to the 3D length of that border. Fails for a
-/// closed mesh, which needs seams.
+/// seams are on its border) and `border_length` to the 3D length of that border: the
+/// library's `main_border()`, whose rule for loops of equal length does not depend on
+/// rounding (the same loop, from the same vertex, for the mesh moved, mirrored or scaled).
+/// Fails for a closed mesh, which needs seams.
 template <class TriangleMesh>
 Failure find_longest_border(const TriangleMesh& tm,
                             typename boost::graph_traits<TriangleMesh>::halfedge_descriptor& bhd,
                             double& border_length)
 {
   Failure f;
-  const auto border = CGAL::Polygon_mesh_processing::longest_border(tm);
+  const auto border = CGAL::Surface_mesh_parameterization::main_border(tm);
   if(border.first == boost::graph_traits<TriangleMesh>::null_halfedge())
   {
     f.detail = "the mesh is closed (it has no border): give seams that cut it open into a disk with"
