@@ -8,7 +8,8 @@
 // Author(s)     : The measured boundary parameterization authors
 
 // The fill-reducing ordering of CHOLMOD for the package's interior cotangent Laplacian L_II:
-// AMD against METIS's nested dissection, with Eigen's SimplicialLDLT (AMD) as a reference.
+// AMD against METIS's nested dissection and SuiteSparse's own (NESDIS), with Eigen's
+// SimplicialLDLT (AMD) as a reference.
 //
 //   cholmod_ordering [MESH:LEVELS ...]
 //
@@ -166,7 +167,8 @@ int main(int argc, char** argv)
     };
     row("Eigen LDLT (AMD)", time_ldlt(A));
     row("CHOLMOD AMD", time_cholmod(A, Cholmod::AMD));
-    row("CHOLMOD nested dissection", time_cholmod(A, Cholmod::NESTED_DISSECTION));
+    row("CHOLMOD METIS nested dissection", time_cholmod(A, Cholmod::NESTED_DISSECTION));
+    row("CHOLMOD NESDIS (SuiteSparse)", time_cholmod(A, Cholmod::SUITESPARSE_NESTED_DISSECTION));
   }
   return EXIT_SUCCESS;
 }

@@ -36,12 +36,15 @@ namespace Surface_mesh_parameterization {
 /// (link `MeasuredParameterization::Cholmod`).
 ///
 /// The fill-reducing ordering is chosen, not left to CHOLMOD's default sequence of trials:
-/// `NESTED_DISSECTION` (METIS's nested dissection, CHOLMOD's `CHOLMOD_METIS`) by default,
-/// chosen by measurement on mesh Laplacians (`benchmark/README.md`, section *CHOLMOD
-/// ordering*: less fill and faster factorizations than AMD from 45k vertices up), or
-/// `AMD`. The symbolic analysis (ordering and supernodal structure) is computed once and
-/// reused by every later factorization of a matrix with the same pattern; only the numeric
-/// factorization is redone.
+/// `AMD` (approximate minimum degree) by default, or `NESTED_DISSECTION` (METIS's nested
+/// dissection, CHOLMOD's `CHOLMOD_METIS`). Measured on the package's interior Laplacians
+/// (`benchmark/README.md`, section *CHOLMOD ordering*): nested dissection gives 30-35% less
+/// fill and a numeric factorization twice as fast from 179k vertices up, but computing it
+/// costs more than it saves in a single factorization (714k vertices: 9.8 s against 6.6 s
+/// for AMD, analysis included), and every system of a call has its own pattern. The symbolic
+/// analysis (ordering and supernodal structure) is kept and reused when the same object
+/// factorizes a matrix with the same pattern again (only the numeric factorization is
+/// redone): with nested dissection, such refactorizations are the fastest.
 ///
 /// The factor lives in CHOLMOD's memory; the matrix is not needed after `factor()`.
 /// Copies share the factor (as `CGAL::Eigen_solver_traits` share their solver): give each
@@ -66,12 +69,15 @@ public:
   {
     /// approximate minimum degree
     AMD,
-    /// METIS's nested dissection
-    NESTED_DISSECTION
+    /// METIS's nested dissection (CHOLMOD's `CHOLMOD_METIS`)
+    NESTED_DISSECTION,
+    /// SuiteSparse's own nested dissection (CHOLMOD's `CHOLMOD_NESDIS`: METIS bisections,
+    /// constrained minimum degree inside)
+    SUITESPARSE_NESTED_DISSECTION
   };
 
   /// creates traits with the given ordering.
-  explicit Cholmod_supernodal_cholesky_traits(Ordering ordering = NESTED_DISSECTION)
+  explicit Cholmod_supernodal_cholesky_traits(Ordering ordering = AMD)
     : m_state(std::make_shared<State>(ordering))
   { }
 
@@ -128,7 +134,7 @@ private:
     {
       cholmod_start(&common);
       common.nmethods = 1;
-      common.method[0].ordering = (o == AMD) ? CHOLMOD_AMD : CHOLMOD_METIS;
+      common.method[0].ordering = (o == AMD) ? CHOLMOD_AMD : (o == NESTED_DISSECTION) ? CHOLMOD_METIS : CHOLMOD_NESDIS;
       common.postorder = 1;
       common.supernodal = CHOLMOD_SUPERNODAL;
     }

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/border_family.h>
 
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Default.h>
 #include <CGAL/tags.h>
 
@@ -526,6 +527,28 @@ private:
   Repair m_repair = BLEND_TOWARD_CIRCLE;
   Border_choice m_border_choice = MEASURED_BORDER;
 };
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// computes the parameterization of the connected component bounded by the border loop of
+/// `bhd` with `parameterizer` and writes the UVs into `uvmap`: CGAL's
+/// `parameterize(mesh, parameterizer, bhd, uvmap)` for this parameterizer (overload
+/// resolution picks this more specialized function), without the work that CGAL's function
+/// does for parameterizers that need it: the vertex index map of the component (a set of its
+/// faces, O(F log F), about 14% of a call on a 45k-vertex mesh: the parameterizer indexes the
+/// component itself) and its preconditions (a bad `bhd` is the error code
+/// `ERROR_INVALID_BORDER_HALFEDGE`, not an assertion).
+template <class TriangleMesh, class CenterLocator, class BorderDistance, class SolverTraits, class ConcurrencyTag,
+          class HalfedgeDescriptor, class VertexUVmap>
+Error_code parameterize(TriangleMesh& mesh,
+                        Measured_conformal_parameterizer_3<TriangleMesh, CenterLocator, BorderDistance,
+                                                           SolverTraits, ConcurrencyTag> parameterizer,
+                        HalfedgeDescriptor bhd,
+                        VertexUVmap uvmap)
+{
+  return parameterizer.parameterize(mesh, bhd, uvmap, get(CGAL::dynamic_vertex_property_t<int>(), mesh),
+                                    get(CGAL::dynamic_vertex_property_t<bool>(), mesh));
+}
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
