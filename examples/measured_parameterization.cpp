@@ -22,7 +22,9 @@
 // one-line summary or a JSON object with the times, the solver work and the distortion.
 // With --seams, the mesh (closed, or open with handles) is first cut along the seam edges
 // of a CGAL selection file: the program parameterizes the CGAL::Seam_mesh, and the OBJ gets
-// one UV per vertex of the seam mesh (one per side of a seam).
+// one UV per vertex of the seam mesh (one per side of a seam). Without --seams, a mesh that is
+// not a disk (closed, with holes or handles) is cut along automatic seams (compute_disk_seams);
+// --write-seams=FILE writes the seams used as a CGAL selection file.
 // On any failure it says why on stderr, exits with a non-zero status and leaves no output
 // file. The library does no IO; this program is the IO layer (helpers in cli/).
 
@@ -38,6 +40,7 @@
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/Straightest_geodesic_border_distance.h>
+#include <CGAL/Surface_mesh_parameterization/compute_disk_seams.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 #ifdef MBP_WITH_CHOLMOD
 #include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
@@ -60,6 +63,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -504,6 +508,66 @@ std::string border_summary(const Parameterization_result& result)
          (c.mean_value ? ", mean value interior" : "") + tried;
 }
 
+// Whether the layout was repaired, for the summary and the SVG: "repaired 12 flipped faces:
+// blend 0.25, mean value interior", "no repair needed" or "repair off".
+std::string repair_summary(const Parameterization_result& result, bool repair_enabled)
+{
+  if(result.repaired)
+    return "repaired " + std::to_string(result.flipped_before_repair) + " flipped faces: blend " +
+           mbp_cli::rounded(result.blend, 3) + (result.mean_value_interior ? ", mean value interior" : "");
+  return repair_enabled ? "no repair needed" : "repair off";
+}
+
+// The end of a failed run: the message on stderr ("error: MESSAGE" and, for a command-line
+// error, the hint to --help) and, with --json, the same on stdout as one JSON object,
+// {"error": MESSAGE, "code": STATUS, "error_code": N}: STATUS is the exit status returned
+// (1: the input cannot be parameterized or an output cannot be written; 2: a command-line
+// error), N the library's Error_code when the failure is one (null otherwise).
+int fail_with(const std::string& message, int status, bool json, SMP::Error_code code = SMP::OK)
+{
+  std::cerr << "error: " << message << "\n";
+  if(status == exit_usage)
+    std::cerr << "(run with --help for the usage)\n";
+  if(json)
+  {
+    mbp_cli::Json_writer j;
+    j.begin_object().member("error", message).member("code", status);
+    if(code == SMP::OK)
+      j.null_member("error_code");
+    else
+      j.member("error_code", static_cast<int>(code));
+    j.end_object();
+    std::cout << j.text();
+  }
+  return status;
+}
+
+// Automatic seams (compute_disk_seams()) of a mesh that is not a disk: its seam edges into
+// `seams`, or why there are none.
+mbp_cli::Failure automatic_seams_of(Mesh& mesh, std::vector<edge_descriptor>& seams,
+                                    SMP::Disk_seams_report<Mesh>& report)
+{
+  Seam_edge_map edge_flags = mesh.add_property_map<edge_descriptor, bool>("e:automatic_seam", false).first;
+  Seam_vertex_map vertex_flags = mesh.add_property_map<vertex_descriptor, bool>("v:automatic_seam", false).first;
+  mbp_cli::Failure f;
+  f.code = SMP::compute_disk_seams(mesh, edge_flags, vertex_flags, report);
+  if(f.code != SMP::OK)
+  {
+    f.detail = std::string("automatic seams: ") + SMP::disk_seams_problem_message(report.problem);
+    if(report.problem_vertex != Mesh::null_vertex())
+      f.detail += " (vertex " + std::to_string(std::size_t(report.problem_vertex)) + ")";
+    if(report.problem_face != Mesh::null_face())
+      f.detail += " (face " + std::to_string(std::size_t(report.problem_face)) + ")";
+  }
+  else
+    for(edge_descriptor e : edges(mesh))
+      if(get(edge_flags, e))
+        seams.push_back(e);
+  mesh.remove_property_map(edge_flags);
+  mesh.remove_property_map(vertex_flags);
+  return f;
+}
+
 // A line of text for a comment of the OBJ file: no line breaks or other control characters.
 std::string one_line(std::string s)
 {
@@ -525,8 +589,11 @@ int main(int argc, char** argv)
   const std::string usage_error = mbp_cli::parse_options(argc, argv, options);
   if(!usage_error.empty())
   {
-    std::cerr << "error: " << usage_error << "\n(run with --help for the usage)\n";
-    return exit_usage;
+    // the parsing stopped at the error: --json may come after it
+    bool json = false;
+    for(int i = 1; i < argc; ++i)
+      json = json || std::string(argv[i]) == "--json";
+    return fail_with(usage_error, exit_usage, json);
   }
   if(options.help)
   {
@@ -555,9 +622,8 @@ int main(int argc, char** argv)
     }
   }
   std::string where = generated ? std::string("generated curved disk") : options.input;  // names the failures
-  auto fail = [&where](const mbp_cli::Failure& f) {
-    std::cerr << "error: " << where << ": " << f.message() << "\n";
-    return exit_failure;
+  auto fail = [&where, &options](const mbp_cli::Failure& f) {
+    return fail_with(where + ": " + f.message(), exit_failure, options.json, f.code);
   };
 
   // Output names, checked before anything is read or computed: no output may be an input or
@@ -574,11 +640,10 @@ int main(int argc, char** argv)
     std::string error = files.add_target(options.output, "OUTPUT", usage);
     if(error.empty() && !options.svg.empty())
       error = files.add_target(options.svg, "--svg", usage);
+    if(error.empty() && !options.write_seams.empty())
+      error = files.add_target(options.write_seams, "--write-seams", usage);
     if(!error.empty())
-    {
-      std::cerr << "error: " << error << "\n";
-      return usage ? exit_usage : exit_failure;
-    }
+      return fail_with(error, usage ? exit_usage : exit_failure, options.json);
   }
 
   if(!generated)
@@ -602,27 +667,37 @@ int main(int argc, char** argv)
 
   // ------------------------------------------------------------------ parameterization
   // With seams, of the mesh cut along them: a Seam_mesh over `mesh`. Both give a `Uv_layout`.
-  const bool with_seams = !options.seams.empty();
+  // Without --seams, a mesh that is not a disk is cut along automatic seams.
+  const mbp_cli::Mesh_topology topology = mbp_cli::mesh_topology(mesh);
+  const bool automatic_seams = options.seams.empty() && !(topology.border_loops == 1 && topology.genus == 0);
+  const bool with_seams = !options.seams.empty() || automatic_seams;
+  SMP::Disk_seams_report<Mesh> automatic;
   std::vector<edge_descriptor> seams;
   double border_length = 0.;
   Parameterization_result result;
   Uv_layout layout;
   if(with_seams)
   {
-    std::string error = mbp_cli::check_regular_input(options.seams);
-    if(error.empty())
-      error = mbp_cli::read_seam_selection(options.seams, mesh, seams);
-    if(!error.empty())
+    if(automatic_seams)
     {
-      std::cerr << "error: " << options.seams << ": " << error << "\n";
-      return exit_failure;
+      const mbp_cli::Failure f = automatic_seams_of(mesh, seams, automatic);
+      if(f.failed())
+        return fail(f);
+    }
+    else
+    {
+      std::string error = mbp_cli::check_regular_input(options.seams);
+      if(error.empty())
+        error = mbp_cli::read_seam_selection(options.seams, mesh, seams);
+      if(!error.empty())
+        return fail_with(options.seams + ": " + error, exit_failure, options.json);
     }
     Seam_edge_map seam_edges = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
     Seam_vertex_map seam_vertices = mesh.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
     Seam_mesh seam_mesh(mesh, seam_edges, seam_vertices);
     for(edge_descriptor e : seams)
       seam_mesh.add_seam(source(e, mesh), target(e, mesh));
-    where += " cut along " + options.seams;
+    where += " cut along " + (automatic_seams ? std::string("automatic seams") : options.seams);
 
     // one piece and no new border loop (handles left uncut are found by the parameterizer)
     mbp_cli::Failure f;
@@ -660,16 +735,15 @@ int main(int argc, char** argv)
   // the OBJ, written straight into its temporary file
   mbp_cli::Buffered_writer* obj = files.begin(0);
   if(obj == nullptr)
-  {
-    std::cerr << "error: " << files.error() << "\n";
-    return exit_failure;
-  }
+    return fail_with(files.error(), exit_failure, options.json);
   *obj << "# UV layout by measured_parameterization: measured boundary parameterization (center: "
        << options.center_name() << ", border distances: " << options.distance << "), discrete conformal interior\n";
   *obj << "# border: --border=" << options.border << ", kept " << border_summary(result) << "\n";
   *obj << "# input: " << one_line(generated ? mesh_name : options.input) << "\n";
   if(with_seams)
-    *obj << "# cut along " << seams.size() << " seam edges (" << one_line(options.seams)
+    *obj << "# cut along " << seams.size() << " seam edges ("
+         << (automatic_seams ? "automatic, " + std::to_string(automatic.cones.size()) + " cones"
+                             : one_line(options.seams))
          << "): one 'vt' per side of a seam, faces 'f v/vt'\n";
   *obj << "# " << layout.vertices.size() << " vertices, " << layout.faces.size() << " faces"
        << (result.has_center ? ", center: input vertex " + std::to_string(center_index) + " (0-based)" : std::string())
@@ -689,10 +763,7 @@ int main(int argc, char** argv)
     *obj << '\n';
   }
   if(!files.end(0))
-  {
-    std::cerr << "error: " << files.error() << "\n";
-    return exit_failure;
-  }
+    return fail_with(files.error(), exit_failure, options.json);
 
   std::string svg;
   if(!options.svg.empty())
@@ -706,12 +777,32 @@ int main(int argc, char** argv)
       picture.face_flipped.push_back(!(fq.uv_area > 0.));
     }
     picture.border = layout.border;
+    if(with_seams)  // both sides of each seam edge: the edge of each of its two faces
+    {
+      const std::set<edge_descriptor> on_seam(seams.begin(), seams.end());
+      std::size_t i = 0;
+      for(face_descriptor fd : faces(mesh))
+      {
+        const std::array<std::size_t, 3>& t = layout.faces[i++];
+        std::size_t k = 0;  // the k-th halfedge of the face ends at UV t[k]
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(fd, mesh), mesh))
+        {
+          if(on_seam.count(edge(h, mesh)) > 0)
+            picture.seams.push_back({t[(k + 2) % 3], t[k]});
+          ++k;
+        }
+      }
+      picture.seam_edges = seams.size();
+    }
     picture.center = result.has_center ? layout.center : std::numeric_limits<std::size_t>::max();
     picture.center_label = "center (vertex " + std::to_string(center_index) + ")";
     picture.title = mesh_name;
     picture.caption.push_back(std::to_string(layout.vertices.size()) + " vertices, " +
                               std::to_string(layout.faces.size()) + " faces, " +
-                              (with_seams ? std::to_string(seams.size()) + " seam edges (" +
+                              (with_seams ? std::to_string(seams.size()) +
+                                              (automatic_seams ? " automatic seam edges (" +
+                                                                   std::to_string(automatic.cones.size()) + " cones, "
+                                                               : std::string(" seam edges (")) +
                                               std::to_string(layout.uv.size()) + " UVs), "
                                           : std::string()) +
                               "border of " + std::to_string(result.border_vertices) + " vertices, center: " +
@@ -720,6 +811,8 @@ int main(int argc, char** argv)
                               mbp_cli::rounded(quality.l2_stretch) + ",  quasi-conformal mean " +
                               mbp_cli::rounded(quality.quasi_conformal_mean) + ",  flipped faces " +
                               std::to_string(quality.flipped_faces));
+    picture.caption.push_back("border " + options.border + ": kept " + border_summary(result) + ",  " +
+                              repair_summary(result, options.repair));
     svg = mbp_cli::svg_document(picture);
   }
 
@@ -735,21 +828,31 @@ int main(int argc, char** argv)
         written = files.end(1);
       }
     }
+    if(written && !options.write_seams.empty())
+    {
+      const std::size_t k = options.svg.empty() ? 1 : 2;  // the targets' order of add_target()
+      mbp_cli::Buffered_writer* out = files.begin(k);
+      written = out != nullptr;
+      if(written)
+      {
+        *out << mbp_cli::seam_selection_text(mesh, seams, automatic.cones);
+        written = files.end(k);
+      }
+    }
     // for the tests of interrupted and failed runs (test_cli): stop with every output written
     // to its temporary file, before any is published
     if(written && std::getenv("MBP_CLI_TEST_STOP_BEFORE_PUBLISH") != nullptr)
       std::raise(SIGSTOP);
     if(!written || !files.publish())
-    {
-      std::cerr << "error: " << files.error() << "\n";
-      return exit_failure;
-    }
+      return fail_with(files.error(), exit_failure, options.json);
   }
   const double write_seconds = seconds_since(start);
 
   // ------------------------------------------------------------------ report
   if(isolated > 0)
     std::cerr << "note: " << isolated << " vertices in no face were left out of " << options.output << "\n";
+  if(!options.write_seams.empty() && !with_seams)
+    std::cerr << "note: the mesh is a disk, it needs no seams: " << options.write_seams << " lists none\n";
   if(quality.flipped_faces > 0)
     std::cerr << "warning: " << quality.flipped_faces << " of " << quality.number_of_faces
               << " faces are flipped in the UV layout: the map is not one-to-one"
@@ -804,11 +907,29 @@ int main(int argc, char** argv)
     j.member("vertices", layout.vertices.size());
     j.member("faces", layout.faces.size());
     j.member("isolated_vertices", isolated);
-    if(with_seams)
+    if(with_seams && !automatic_seams)
       j.member("seams", options.seams);
     else
       j.null_member("seams");
     j.member("seam_edges", seams.size());
+    if(automatic_seams)
+    {
+      j.begin_object("automatic_seams")
+         .member("seam_edges", seams.size())
+         .member("cones", automatic.cones.size());
+      j.begin_array("cone_vertices");
+      for(vertex_descriptor v : automatic.cones)
+        j.element(double(std::size_t(v)));
+      j.end_array();
+      j.member("length", std::ldexp(automatic.seam_length, -scaled.exponent()))
+         .member("genus", automatic.genus)
+         .member("border_loops", automatic.number_of_border_loops)
+         .member("loops", automatic.number_of_loops)
+         .member("seconds", automatic.seconds)
+         .end_object();
+    }
+    else
+      j.null_member("automatic_seams");
     j.member("uvs", layout.uv.size());
     j.begin_object("border")
        .member("vertices", result.border_vertices)
@@ -872,7 +993,9 @@ int main(int argc, char** argv)
   {
     using mbp_cli::rounded;
     std::cout << mesh_name << ": V " << layout.vertices.size() << ", F " << layout.faces.size()
-              << (with_seams ? " | seams " + std::to_string(seams.size()) + " edges, " +
+              << (with_seams ? std::string(automatic_seams ? " | automatic seams " : " | seams ") +
+                                 std::to_string(seams.size()) + " edges, " +
+                                 (automatic_seams ? std::to_string(automatic.cones.size()) + " cones, " : std::string()) +
                                  std::to_string(layout.uv.size()) + " UVs"
                              : std::string())
               << " | border " << result.border_vertices << " vertices, length " << rounded(border_length)
@@ -891,10 +1014,7 @@ int main(int argc, char** argv)
               << " | angle distortion " << rounded(quality.angle_distortion) << ", L2 stretch "
               << rounded(quality.l2_stretch) << ", quasi-conformal mean " << rounded(quality.quasi_conformal_mean)
               << ", flipped faces " << quality.flipped_faces
-              << (result.repaired ? " | repaired " + std::to_string(result.flipped_before_repair) +
-                                        " flipped faces: blend " + rounded(result.blend, 3) +
-                                        (result.mean_value_interior ? ", mean value interior" : "")
-                                  : std::string())
+              << " | " << repair_summary(result, options.repair)
               << " | wrote " << options.output << (options.svg.empty() ? std::string() : ", " + options.svg)
               << "\n";
   }

@@ -21,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/border.h>
 
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/main_border.h>
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
@@ -274,10 +275,12 @@ boost::property_tree::ptree parse_json(const std::string& text)
 
 // ---------------------------------------------------------------- meshes
 
-// The program's default mesh (examples/CMakeLists.txt picks it from the same mesh set).
+// The program's default mesh (MBP_CLI_DEFAULT_MESH of the top CMakeLists.txt).
 std::string default_mesh_path()
 {
-  return mbp_test::require_mesh(mbp_test::mesh_set() == "shared" ? "matthew_nefertiti.off" : "nefertiti.off");
+  const std::string path = MBP_CLI_DEFAULT_MESH;
+  BOOST_REQUIRE_MESSAGE(mbp_test::file_exists(path), "missing default mesh " << path);
+  return path;
 }
 
 std::vector<vertex_descriptor> border_loop(const Mesh& mesh)
@@ -373,7 +376,9 @@ BOOST_AUTO_TEST_CASE(default_run_writes_obj_svg_and_summary)
   BOOST_TEST(contains(r.out, "F " + std::to_string(num_faces(mesh))), r.out);
   BOOST_TEST(contains(r.out, "angle distortion"));
   BOOST_TEST(contains(r.out, "L2 stretch"));
-  BOOST_TEST(contains(r.out, "2 factorizations, 4 back-substitutions"), r.out);
+  // the default: the automatic border with fast marching distances, one factorization
+  BOOST_TEST(contains(r.out, " 1 factorizations, "), r.out);
+  BOOST_TEST(contains(r.out, "| border auto: "), r.out);
   BOOST_TEST(!contains(r.out, "nan"));
 
   check_obj_against_mesh(read_obj(scratch.work / obj_name), mesh);
@@ -393,7 +398,6 @@ BOOST_AUTO_TEST_CASE(default_run_writes_obj_svg_and_summary)
   BOOST_TEST(contains(svg, fs::path(path).filename().string()));
   BOOST_TEST(contains(svg, "angle distortion"));
   BOOST_TEST(contains(svg, "flipped faces: 0"));
-  BOOST_TEST(contains(svg, "center (vertex "));
   BOOST_TEST(!contains(svg, "nan"));
   BOOST_TEST(svg.size() < 40 * num_faces(mesh) + 30000, "SVG of " << svg.size() << " bytes");
 
@@ -412,7 +416,8 @@ BOOST_AUTO_TEST_CASE(obj_holds_the_library_result)
   auto uv = mesh.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
   SMP::Measured_conformal_parameterizer_3<Mesh> parameterizer;  // Eigen's LDLT
   auto marked = mesh.add_property_map<vertex_descriptor, bool>("v:marked", false).first;
-  BOOST_REQUIRE(parameterizer.parameterize(mesh, mbp_test::longest_border(mesh), uv,
+  // the command line lays out the border of SMP::main_border()
+  BOOST_REQUIRE(parameterizer.parameterize(mesh, SMP::main_border(mesh).first, uv,
                                            get(boost::vertex_index, mesh), marked) == SMP::OK);
 
   std::vector<std::string> solvers{"ldlt"};
@@ -424,7 +429,7 @@ BOOST_AUTO_TEST_CASE(obj_holds_the_library_result)
     BOOST_TEST_CONTEXT("--solver=" << solver)
     {
       Scratch scratch;
-      const Run r = scratch.run({path, "out.obj", "--json", "--solver=" + solver});
+      const Run r = scratch.run({path, "out.obj", "--json", "--border=measured", "--solver=" + solver});
       BOOST_REQUIRE_EQUAL(r.code, 0);
       const boost::property_tree::ptree json = parse_json(r.out);
       BOOST_TEST(json.get<std::string>("solver") == solver);
@@ -460,7 +465,7 @@ BOOST_AUTO_TEST_CASE(json_output_and_fixed_center)
     BOOST_TEST_CONTEXT((fixed ? "--center=vertex:N" : "--center=poisson"))
     {
       Scratch scratch;
-      std::vector<std::string> args{path, "out.obj", "--json", "--svg=out.svg"};
+      std::vector<std::string> args{path, "out.obj", "--json", "--svg=out.svg", "--border=measured"};
       args.push_back(fixed ? "--center=vertex:" + std::to_string(n) : std::string("--center=poisson"));
       const Run r = scratch.run(args);
       BOOST_REQUIRE_EQUAL(r.code, 0);
@@ -521,7 +526,8 @@ BOOST_AUTO_TEST_CASE(geodesic_centers_and_distances)
   {
     Scratch scratch;
     scratch.write("ellipse.off", off_text(mbp_test::hex_disk(10, 2., 1.)));
-    const Run r = scratch.run({"ellipse.off", "out.obj", "--json", "--center=geodesic:exact", "--distance=exact"});
+    const Run r = scratch.run({"ellipse.off", "out.obj", "--json", "--border=measured", "--center=geodesic:exact",
+                               "--distance=exact"});
     BOOST_REQUIRE_EQUAL(r.code, 0);
     const boost::property_tree::ptree j = parse_json(r.out);
     BOOST_TEST(j.get<std::string>("center_locator") == "geodesic:exact");
@@ -540,7 +546,8 @@ BOOST_AUTO_TEST_CASE(geodesic_centers_and_distances)
     BOOST_TEST_CONTEXT("--distance=" << d)
     {
       Scratch scratch;
-      const Run r = scratch.run({path, "out.obj", "--json", "--distance=" + d, "--center=geodesic:heat"});
+      const Run r = scratch.run({path, "out.obj", "--json", "--border=measured", "--distance=" + d,
+                                 "--center=geodesic:heat"});
       BOOST_REQUIRE_EQUAL(r.code, 0);
       const boost::property_tree::ptree j = parse_json(r.out);
       BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
@@ -554,19 +561,20 @@ BOOST_AUTO_TEST_CASE(geodesic_centers_and_distances)
 
 BOOST_AUTO_TEST_CASE(automatic_border)
 {
-  // --border=auto: every candidate is listed, the kept one is the valid candidate of lowest
-  // angle distortion, it is the layout written, and it is never worse than the circle or the
-  // pure measured borders (members of the family)
+  // --border=auto (the default): every layout tried is listed, the kept one is the valid
+  // candidate of lowest angle distortion, it is the layout written, and it is never worse
+  // than the circle or the paper's measured border run on its own
   const std::string path = default_mesh_path();
   Scratch scratch;
-  const Run r = scratch.run({path, "out.obj", "--json", "--border=auto"});
+  const Run r = scratch.run({path, "out.obj", "--json"});
   BOOST_REQUIRE_EQUAL(r.code, 0);
   const boost::property_tree::ptree j = parse_json(r.out);
   BOOST_TEST(j.get<std::string>("border_choice.mode") == "auto");
+  BOOST_TEST(j.get<std::string>("border_distance") == "fast-marching");  // auto's measured member
   const boost::property_tree::ptree& candidates = j.get_child("border_choice.candidates");
-  BOOST_TEST(candidates.size() >= 3u);
+  BOOST_TEST(candidates.size() >= 2u);
   BOOST_TEST(candidates.size() <= 15u);
-  double best = std::numeric_limits<double>::infinity(), circle = -1., poisson = -1.;
+  double best = std::numeric_limits<double>::infinity(), circle = -1., conformal = -1.;
   int best_index = -1, index = 0;
   for(const auto& c : candidates)
   {
@@ -584,35 +592,49 @@ BOOST_AUTO_TEST_CASE(automatic_border)
       }
       if(kind == "circle")
         circle = d;
-      if(kind == "measured:poisson" && blend == 0.)
-        poisson = d;
+      if(kind == "conformal")
+        conformal = d;
     }
     else
       BOOST_TEST(c.second.get<std::string>("angle_distortion") == "null");
     ++index;
   }
-  BOOST_TEST(circle > 0.);   // the circle is always tried and valid (a convex border)
-  BOOST_TEST(poisson > 0.);  // the pure Poisson border of the default mesh is valid
+  BOOST_TEST(circle > 0.);     // the circle is always tried and valid here
+  BOOST_TEST(conformal >= 0.); // the conformal layout of the default mesh is valid
   BOOST_TEST(j.get<int>("border_choice.chosen.index") == best_index);
+  BOOST_TEST(j.get<std::string>("border_choice.chosen.kind") == "conformal");
   BOOST_TEST(j.get<double>("border_choice.chosen.angle_distortion") == best);
-  BOOST_TEST(j.get<std::size_t>("border_choice.chosen.center") == j.get<std::size_t>("center.index"));
+  BOOST_TEST(j.get<int>("statistics.factorizations") == 1);
   BOOST_TEST(best <= circle);
-  BOOST_TEST(best <= poisson);
+  BOOST_TEST(best < 0.1 * circle);  // near-conformal: far below the circle on this curved patch
   // the objective is the paper's angle distortion of the written layout
-  BOOST_TEST(std::abs(j.get<double>("quality.angle_distortion") - best) <= 1e-9 * best);
+  BOOST_TEST(std::abs(j.get<double>("quality.angle_distortion") - best) <= 1e-9 * best + 1e-15);
   BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
-  // the measured default run gives the pure Poisson border's distortion
-  const Run m = scratch.run({path, "measured.obj", "--json"});
+  // the paper's measured border, run on its own, is not better
+  const Run m = scratch.run({path, "measured.obj", "--json", "--border=measured"});
   BOOST_REQUIRE_EQUAL(m.code, 0);
   const boost::property_tree::ptree mj = parse_json(m.out);
   BOOST_TEST(mj.get<std::string>("border_choice.mode") == "measured");
-  BOOST_TEST(std::abs(mj.get<double>("quality.angle_distortion") - poisson) <= 1e-9 * poisson);
+  BOOST_TEST(mj.get<std::string>("border_distance") == "poisson");
+  BOOST_TEST(mj.get<int>("statistics.factorizations") == 2);
+  BOOST_TEST(best <= mj.get<double>("quality.angle_distortion"));
+  // --border=conformal and --border=circle give the members alone, with one factorization
+  for(const std::string b : {"conformal", "circle"})
+  {
+    const Run o = scratch.run({path, b + ".obj", "--json", "--border=" + b});
+    BOOST_REQUIRE_EQUAL(o.code, 0);
+    const boost::property_tree::ptree oj = parse_json(o.out);
+    BOOST_TEST(oj.get<int>("statistics.factorizations") == 1);
+    BOOST_TEST(oj.get<std::string>("border_choice.chosen.kind") == b);
+    const double d = oj.get<double>("quality.angle_distortion");
+    BOOST_TEST(std::abs(d - (b == "circle" ? circle : conformal)) <= 1e-9 * d + 1e-15);
+  }
   // the summary names the kept border; the OBJ says how it was chosen
-  const Run t = scratch.run({path, "text.obj", "--border=auto"});
+  const Run t = scratch.run({path, "text.obj"});
   BOOST_REQUIRE_EQUAL(t.code, 0);
-  BOOST_TEST(contains(t.out, "| border auto: "));
-  BOOST_TEST(contains(t.out, std::to_string(candidates.size()) + " borders tried"));
-  BOOST_TEST(contains(Scratch::read_text(scratch.work / "text.obj"), "# border: --border=auto, "));
+  BOOST_TEST(contains(t.out, "| border auto: conformal"), t.out);
+  BOOST_TEST(contains(t.out, std::to_string(candidates.size()) + " layouts tried"), t.out);
+  BOOST_TEST(contains(Scratch::read_text(scratch.work / "text.obj"), "# border: --border=auto, kept conformal"));
   // a bad value is a usage error
   Scratch bad;
   const Run b = bad.run({path, "bad.obj", "--border=convex"});
@@ -633,7 +655,7 @@ BOOST_AUTO_TEST_CASE(reads_off_obj_ply_and_stl)
       Scratch scratch;
       const fs::path input = scratch.work / ("disk." + ext);
       BOOST_REQUIRE(CGAL::IO::write_polygon_mesh(input.string(), mesh, CGAL::parameters::stream_precision(17)));
-      const Run r = scratch.run({input.filename().string(), "--json"});
+      const Run r = scratch.run({input.filename().string(), "--json", "--border=measured"});
       BOOST_REQUIRE_EQUAL(r.code, 0);
       BOOST_TEST(fs::exists(scratch.work / "disk_uv.obj"));  // default OUTPUT
       const boost::property_tree::ptree j = parse_json(r.out);
@@ -865,7 +887,7 @@ std::size_t check_seam_obj(const Obj& obj, const Mesh& mesh, const std::vector<s
 BOOST_AUTO_TEST_CASE(seams_cut_a_closed_mesh)
 {
   // fandisk.off (closed, genus 0) cut along the shortest edge path of the example's seams
-  const std::string path = mbp_test::require_mesh("fandisk.off");
+  const std::string path = mbp_test::core_mesh("fandisk.off");
   const std::string selection = example_data("fandisk.selection.txt");
   Mesh mesh;
   mbp_test::read_mesh(path, mesh);
@@ -873,7 +895,7 @@ BOOST_AUTO_TEST_CASE(seams_cut_a_closed_mesh)
   BOOST_REQUIRE(!seams.empty());
 
   Scratch scratch;
-  const Run r = scratch.run({path, "out.obj", "--seams=" + selection, "--json", "--svg=out.svg"});
+  const Run r = scratch.run({path, "out.obj", "--seams=" + selection, "--json", "--svg=out.svg", "--border=measured"});
   BOOST_REQUIRE_EQUAL(r.code, 0);
   BOOST_TEST((scratch.files() == std::set<std::string>{"out.obj", "out.svg"}));
   const std::size_t uvs = check_seam_obj(read_obj(scratch.work / "out.obj", true), mesh, seams);
@@ -912,45 +934,33 @@ BOOST_AUTO_TEST_CASE(seams_cut_a_closed_mesh)
   BOOST_TEST(pj.get<std::size_t>("uvs") == 9u);
 }
 
-BOOST_AUTO_TEST_CASE(closed_mesh_without_seams)
+MBP_TIERED_TEST_CASE(messy_real_meshes_fail_cleanly)
 {
-  const std::string path = mbp_test::require_mesh("fandisk.off");
-  Scratch scratch;
-  const Run r = scratch.run({path, "out.obj", "--svg=out.svg"});
-  BOOST_TEST(r.code == 1);
-  BOOST_TEST(contains(r.err, "error: " + path + ": the mesh is closed (it has no border)"), r.err);
-  BOOST_TEST(contains(r.err, "--seams=FILE.selection.txt"), r.err);
-  BOOST_TEST(r.out.empty());
-  BOOST_TEST(scratch.files().empty());
-}
-
-BOOST_AUTO_TEST_CASE(closed_messy_and_higher_genus_real_meshes_fail_cleanly)
-{
-  // every mesh of the classes CLOSED, OPEN g>0 and MESSY of ../shared/data/meshes
-  // (PROVENANCE.md): a message naming the problem, exit 1, nothing written
-  // (doc/Surface_mesh_parameterization/hardening.md has the table)
-  std::vector<std::pair<std::string, std::string> > cases = {{"fandisk.off", "the mesh is closed (it has no border)"}};
-  if(mbp_test::mesh_set() == "shared")
-    cases.insert(cases.end(), {
-      {"bear.off", "the mesh is closed (it has no border)"},
-      {"cgal_hand.off", "the mesh is closed (it has no border)"},
-      {"kitten.obj", "the mesh is closed (it has no border)"},
-      {"Hand1.off", "not a topological disc: the surface has genus 1 (handles)"},
-      {"punctured-torus.obj", "not a topological disc: the surface has genus 1 (handles)"},
-      {"mask_cone.off", "not a topological disc: it has 2 connected components"},
-      {"ogre.obj", "not a topological disc: it has 45 connected components"},
-      {"polygon_mesh.off", "not a topological disc: the surface has genus 5 (handles)"}});
+  // messy meshes: a message naming the problem, exit 1, nothing written (closed, holed and
+  // higher-genus meshes get automatic seams: not_a_disk_real_meshes_get_automatic_seams).
+  // Core tier: CGAL's data meshes; extended tier: the other MESSY meshes of the project's
+  // meshes (PROVENANCE.md there; the others are copies of CGAL's).
+  // doc/Surface_mesh_parameterization/hardening.md has the table.
+  const std::vector<std::pair<std::string, std::string> > cases = (tier == mbp_test::Tier::core)
+    ? std::vector<std::pair<std::string, std::string> >{
+        {"mask_cone.off", "not a topological disc: it has 2 connected components"},
+        {"polygon_mesh.off", "automatic seams: the mesh is not a manifold: a vertex joins two or more fans of faces"}}
+    : std::vector<std::pair<std::string, std::string> >{
+        {"ogre.obj", "not a topological disc: it has 45 connected components"}};
   for(const auto& c : cases)
   {
     BOOST_TEST_CONTEXT("mesh: " << c.first)
     {
-      const std::string path = mbp_test::require_mesh(c.first);
+      const std::string path = mbp_test::tier_mesh(tier, c.first);
       Scratch scratch;
       const Run r = scratch.run({path, "out.obj", "--svg=out.svg", "--json"});
       BOOST_TEST(r.code == 1);
       BOOST_TEST(contains(r.err, "error: " + path + ": "), r.err);
       BOOST_TEST(contains(r.err, c.second), r.err);
-      BOOST_TEST(r.out.empty(), r.out);
+      // --json: the same error as a JSON object on stdout
+      const boost::property_tree::ptree j = parse_json(r.out);
+      BOOST_TEST(contains(j.get<std::string>("error"), c.second), r.out);
+      BOOST_TEST(j.get<int>("code") == 1);
       BOOST_TEST(scratch.files().empty());
     }
   }
@@ -1014,13 +1024,13 @@ BOOST_AUTO_TEST_CASE(seams_on_a_torus)
     BOOST_TEST((scratch.files() == std::set<std::string>{"torus.off", "loop.selection.txt"}));
   }
   {
-    // without seams: closed
+    // without seams: automatic seams (two loops)
     Scratch scratch;
     scratch.write("torus.off", off_text(soup));
     const Run r = scratch.run({"torus.off", "out.obj"});
-    BOOST_TEST(r.code == 1);
-    BOOST_TEST(contains(r.err, "the mesh is closed"), r.err);
-    BOOST_TEST((scratch.files() == std::set<std::string>{"torus.off"}));
+    BOOST_TEST(r.code == 0);
+    BOOST_TEST(contains(r.out, "| automatic seams "), r.out);
+    BOOST_TEST((scratch.files() == std::set<std::string>{"torus.off", "out.obj"}));
   }
 }
 
@@ -1095,8 +1105,6 @@ std::vector<Bad_case> bad_cases()
   };
   std::vector<Bad_case> cases = {
     {"quad mesh", {{"quads.off", quads}}, with({"quads.off"}), 1, {"not triangular", "4 vertices"}},
-    {"closed octahedron", {{"octahedron.off", octahedron}}, with({"octahedron.off"}), 1,
-     {"closed", "no border", "--seams=FILE.selection.txt"}},
     {"NaN coordinate (text)", {{"nan.off", nan_grid}}, with({"nan.off"}), 1, {"non-finite", "'nan'", "line 7"}},
     {"NaN coordinate (binary)", {{"nan.ply", binary_ply_with_nan()}}, with({"nan.ply"}), 1, {"non-finite", "vertex 4"}},
     {"infinite coordinate", {{"inf.obj", inf_obj}}, with({"inf.obj"}), 1, {"non-finite", "'inf'"}},
@@ -1130,7 +1138,6 @@ std::vector<Bad_case> bad_cases()
     {"PLY list count with trailing characters",
      {{"suffix.ply", ply_header(1, "uint") + "0 0 0\n1 0 0\n0 1 0\n4000000000x 0 1 2\n"}}, with({"suffix.ply"}), 1,
      {"line 13", "'4000000000x' is not an integer"}},
-    {"handle", {{"torus.off", off_text(mbp_test::punctured_torus())}}, with({"torus.off"}), 1, {"not a topological disc"}},
     {"unknown option", {{"grid.off", grid}}, with({"grid.off", "--frobnicate"}), 2, {"unknown option", "--frobnicate"}},
     {"unknown center", {{"grid.off", grid}}, with({"grid.off", "--center=middle"}), 2, {"--center", "middle"}},
     {"bad vertex index", {{"grid.off", grid}}, with({"grid.off", "--center=vertex:4x"}), 2, {"bad vertex index"}},
@@ -1138,7 +1145,7 @@ std::vector<Bad_case> bad_cases()
     {"unknown geodesic method", {{"grid.off", grid}}, with({"grid.off", "--center=geodesic:sloppy"}), 2,
      {"geodesic method", "sloppy"}},
     {"straightest geodesic misses a border vertex", {{"c.off", off_text(mbp_test::c_shape())}},
-     with({"c.off", "--distance=straightest"}), 1, {"straightest geodesic", "does not reach border vertex"}},
+     with({"c.off", "--border=measured", "--distance=straightest"}), 1, {"straightest geodesic", "does not reach border vertex"}},
     {"unknown solver", {{"grid.off", grid}}, with({"grid.off", "--solver=lu"}), 2, {"--solver", "lu"}},
     {"svg without file", {{"grid.off", grid}}, {"grid.off", "out.obj", "--svg"}, 2, {"--svg"}},
     {"too many arguments", {{"grid.off", grid}}, with({"grid.off", "a.obj", "b.obj"}), 2, {"too many arguments"}},
@@ -1653,6 +1660,315 @@ BOOST_AUTO_TEST_CASE(long_output_names)
   BOOST_REQUIRE_EQUAL(r.code, 0);
   BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off", obj, svg}));
   BOOST_TEST(read_obj(scratch.work / obj).f.size() == 8u);
+}
+
+// ---------------------------------------------------------------- failures with --json, the
+// border and repair in the summary and the SVG, the usage hint (issue 12)
+
+namespace {
+
+std::size_t occurrences(const std::string& text, const std::string& part)
+{
+  std::size_t n = 0;
+  for(std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + part.size()))
+    ++n;
+  return n;
+}
+
+// The text of stderr after "error: ", without the final line break(s) and usage hint.
+std::string error_message(const std::string& err)
+{
+  const std::size_t at = err.find("error: ");
+  if(at == std::string::npos)
+    return std::string();
+  const std::size_t end = err.find('\n', at);
+  return err.substr(at + 7, end == std::string::npos ? std::string::npos : end - at - 7);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(json_failures_are_json_on_stdout)
+{
+  // --json: a failure prints {"error": ..., "code": ..., "error_code": ...} on stdout (the
+  // same message as on stderr; code = the exit status), and writes no file
+  struct Case
+  {
+    std::string name;
+    std::vector<std::string> args;
+    int code;
+    std::string message;  // a part of the message
+  };
+  const std::vector<Case> cases = {
+    {"missing input", {"missing.off", "out.obj", "--json"}, 1, "missing.off"},
+    {"bad option value, --json first", {"--json", "grid.off", "--border=convex"}, 2, "--border"},
+    {"unknown option, --json after it", {"grid.off", "--frobnicate", "--json"}, 2, "unknown option '--frobnicate'"},
+    {"center on the border", {"grid.off", "out.obj", "--center=vertex:0", "--json"}, 1, "--center=vertex:0"},
+  };
+  for(const Case& c : cases)
+    BOOST_TEST_CONTEXT(c.name)
+    {
+      Scratch scratch;
+      scratch.write("grid.off", grid_off);
+      const Run r = scratch.run(c.args);
+      BOOST_TEST(r.code == c.code);
+      BOOST_TEST(contains(r.err, c.message), r.err);
+      const boost::property_tree::ptree j = parse_json(r.out);
+      BOOST_TEST(j.get<std::string>("error") == error_message(r.err), r.out);
+      BOOST_TEST(contains(j.get<std::string>("error"), c.message), r.out);
+      BOOST_TEST(j.get<int>("code") == c.code);
+      const std::string error_code = j.get<std::string>("error_code");
+      BOOST_TEST((error_code == "null" || std::stoi(error_code) > 0), error_code);
+      BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off"}));
+      // without --json nothing on stdout
+      std::vector<std::string> plain;
+      for(const std::string& a : c.args)
+        if(a != "--json")
+          plain.push_back(a);
+      const Run p = scratch.run(plain);
+      BOOST_TEST(p.code == c.code);
+      BOOST_TEST(p.out.empty(), p.out);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(usage_hint_is_printed_once)
+{
+  for(const std::vector<std::string>& args : {std::vector<std::string>{"--frobnicate"},
+                                              std::vector<std::string>{"--border=convex"},
+                                              std::vector<std::string>{"--center=nowhere"}})
+    BOOST_TEST_CONTEXT(args[0])
+    {
+      Scratch scratch;
+      const Run r = scratch.run(args);
+      BOOST_TEST(r.code == 2);
+      BOOST_TEST(occurrences(r.err, "--help") == 1u, r.err);
+      BOOST_TEST(occurrences(r.err, "error: ") == 1u, r.err);
+      BOOST_TEST(scratch.files().empty());
+    }
+}
+
+BOOST_AUTO_TEST_CASE(summary_and_svg_name_the_border_kept_and_the_repair)
+{
+  // a layout that needs no repair: the kept border and "no repair needed"
+  {
+    Scratch scratch;
+    scratch.write("grid.off", grid_off);
+    const Run r = scratch.run({"grid.off", "out.obj", "--svg=out.svg", "--border=measured"});
+    BOOST_REQUIRE_EQUAL(r.code, 0);
+    BOOST_TEST(contains(r.out, "| border measured: measured"), r.out);
+    BOOST_TEST(contains(r.out, "| no repair needed"), r.out);
+    const std::string svg = Scratch::read_text(scratch.work / "out.svg");
+    BOOST_TEST(contains(svg, "border measured: kept measured"), svg.substr(0, 2000));
+    BOOST_TEST(contains(svg, "no repair needed"));
+    const Run off = scratch.run({"grid.off", "off.obj", "--svg=off.svg", "--no-repair"});
+    BOOST_REQUIRE_EQUAL(off.code, 0);
+    BOOST_TEST(contains(off.out, "| repair off"), off.out);
+    BOOST_TEST(contains(Scratch::read_text(scratch.work / "off.svg"), "repair off"));
+  }
+  // a layout that folds: the C-shaped flat domain seen from a vertex of its top arm with exact
+  // geodesic radii (test_validity: generated_fold_is_repaired_or_rejected) is repaired, and
+  // both the summary and the SVG say so, with the number of flipped faces before the repair
+  const mbp_test::Soup soup = mbp_test::c_shape();
+  std::size_t center = soup.points.size();
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    if(std::abs(soup.points[i][0] - 1.5) < 1e-12 && std::abs(soup.points[i][1] - 13. / 6.) < 1e-12)
+      center = i;
+  BOOST_REQUIRE(center < soup.points.size());
+  Scratch scratch;
+  scratch.write("c.off", off_text(soup));
+  const std::vector<std::string> args{"c.off", "c.obj", "--svg=c.svg", "--border=measured",
+                                      "--center=vertex:" + std::to_string(center), "--distance=exact"};
+  const Run r = scratch.run(args);
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  BOOST_TEST(contains(r.out, "| repaired "), r.out);
+  BOOST_TEST(contains(r.out, " flipped faces: blend "), r.out);
+  const std::string svg = Scratch::read_text(scratch.work / "c.svg");
+  BOOST_TEST(contains(svg, "border measured: kept "));
+  BOOST_TEST(contains(svg, "repaired "));
+  std::vector<std::string> json_args = args;
+  json_args[1] = "c_json.obj";
+  json_args[2] = "--json";
+  const Run j = scratch.run(json_args);
+  BOOST_REQUIRE_EQUAL(j.code, 0);
+  const boost::property_tree::ptree tree = parse_json(j.out);
+  BOOST_TEST(tree.get<bool>("repair.repaired"));
+  BOOST_TEST(contains(r.out, "| repaired " + std::to_string(tree.get<std::size_t>("repair.flipped_faces_before")) +
+                               " flipped faces"), r.out);
+  // without repair the same run fails, with the library's code in the JSON
+  json_args.push_back("--no-repair");
+  const Run n = scratch.run(json_args);
+  BOOST_TEST(n.code == 1);
+  BOOST_TEST(parse_json(n.out).get<int>("error_code") == int(SMP::ERROR_NO_1_TO_1_MAPPING), n.out);
+}
+
+// ---------------------------------------------------------------- automatic seams (issue 16)
+
+namespace {
+
+// The mesh of `path`, cut by the program along automatic seams with --write-seams: checks the
+// run (exit 0, the summary or JSON, the seams file, no flipped face, with `target` the issue's
+// angle distortion target) and returns the JSON.
+boost::property_tree::ptree run_automatic_seams(const std::string& path, bool closed, bool target)
+{
+  Mesh mesh;
+  mbp_test::read_mesh(path, mesh);
+  Scratch scratch;
+  const Run r = scratch.run({path, "out.obj", "--svg=out.svg", "--write-seams=out.selection.txt", "--json"});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  BOOST_TEST((scratch.files() == std::set<std::string>{"out.obj", "out.svg", "out.selection.txt"}));
+  const boost::property_tree::ptree j = parse_json(r.out);
+  const std::vector<std::pair<std::size_t, std::size_t> > seams =
+    read_selection_edges((scratch.work / "out.selection.txt").string());
+  BOOST_TEST(j.get<std::string>("seams") == "null");
+  BOOST_TEST(j.get<std::size_t>("seam_edges") == seams.size());
+  BOOST_TEST(j.get<std::size_t>("automatic_seams.seam_edges") == seams.size());
+  BOOST_TEST(seams.size() > 0u);
+  BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
+  if(target)  // issue 16's target on the project's meshes
+    BOOST_TEST(j.get<double>("quality.angle_distortion") <= 0.05);
+  // every seam is an edge of the mesh
+  const std::vector<vertex_descriptor> by_index(vertices(mesh).begin(), vertices(mesh).end());
+  for(const auto& e : seams)
+    BOOST_TEST(edge(by_index[e.first], by_index[e.second], mesh).second);
+  if(closed)
+    check_seam_obj(read_obj(scratch.work / "out.obj", true), mesh, seams);
+  // the SVG draws both sides of every seam edge, and its legend counts them
+  const std::string svg = Scratch::read_text(scratch.work / "out.svg");
+  BOOST_TEST(contains(svg, "seams (" + std::to_string(seams.size()) + " edges, both sides)"));
+  const std::size_t path_start = svg.find("stroke=\"#e66100\"");
+  BOOST_REQUIRE(path_start != std::string::npos);
+  const std::size_t path_end = svg.find("/>", path_start);
+  BOOST_TEST(occurrences(svg.substr(path_start, path_end - path_start), "M") == 2 * seams.size());
+  return j;
+}
+
+} // namespace
+
+MBP_TIERED_TEST_CASE(not_a_disk_real_meshes_get_automatic_seams)
+{
+  // closed (genus 0: 8 cones; higher genus: loops), holed and open higher-genus meshes,
+  // flattened without a seam file. Core tier: CGAL's data meshes; extended tier: the other
+  // meshes of the classes CLOSED, HOLES and OPEN g>0 of the project's meshes. Every one of
+  // those classes is held to issue 16's angle distortion target (<= 0.05); CGAL's eight.off,
+  // coarse (315 vertices) and not among them, gets 0.064.
+  struct Case
+  {
+    std::string name;
+    bool closed;
+    int genus, cones;
+  };
+  const std::vector<Case> cases = (tier == mbp_test::Tier::core)
+    ? std::vector<Case>{{"fandisk.off", true, 0, 8}, {"bear.off", true, 0, 8}, {"hand.off", true, 0, 8},
+                        {"eight.off", true, 2, 0}, {"holes.off", false, 0, 0}, {"head.off", false, 0, 0},
+                        {"lion.off", false, 0, 0}, {"mech-holes-shark.off", false, 0, 0}, {"blade.off", false, 0, 0}}
+    : std::vector<Case>{{"kitten.obj", true, 1, 0}, {"Hand1.off", false, 1, 0}, {"punctured-torus.obj", false, 1, 0},
+                        {"nefertiti-entire.off", false, 0, 0}};
+  for(const Case& c : cases)
+  {
+    BOOST_TEST_CONTEXT("mesh: " << c.name)
+    {
+      const boost::property_tree::ptree j =
+        run_automatic_seams(mbp_test::tier_mesh(tier, c.name), c.closed, c.name != "eight.off");
+      BOOST_TEST(j.get<int>("automatic_seams.genus") == c.genus);
+      BOOST_TEST(j.get<int>("automatic_seams.cones") == c.cones);
+      const int borders = j.get<int>("automatic_seams.border_loops");
+      BOOST_TEST(j.get<int>("automatic_seams.loops") == (borders == 0 ? 2 * c.genus : 2 * c.genus + borders - 1));
+      BOOST_TEST(j.get_child("automatic_seams.cone_vertices").size() == std::size_t(c.cones));
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(automatic_seams_summary_and_written_seams_reused)
+{
+  // a generated torus: two loops. The summary says so; --write-seams gives a selection file
+  // that --seams reads back, to the same layout
+  const mbp_test::Soup soup = closed_torus(16, 10);
+  Scratch scratch;
+  scratch.write("torus.off", off_text(soup));
+  const Run r = scratch.run({"torus.off", "auto.obj", "--write-seams=cut.selection.txt"});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  const std::vector<std::pair<std::size_t, std::size_t> > seams =
+    read_selection_edges((scratch.work / "cut.selection.txt").string());
+  BOOST_TEST(contains(r.out, "| automatic seams " + std::to_string(seams.size()) + " edges, 0 cones, "), r.out);
+  Mesh mesh;
+  mbp_test::soup_to_mesh(soup, mesh);
+  const Obj automatic = read_obj(scratch.work / "auto.obj", true);
+  check_seam_obj(automatic, mesh, seams);
+
+  const Run again = scratch.run({"torus.off", "again.obj", "--seams=cut.selection.txt"});
+  BOOST_REQUIRE_EQUAL(again.code, 0);
+  BOOST_TEST(contains(again.out, "| seams " + std::to_string(seams.size()) + " edges, "), again.out);
+  const Obj reused = read_obj(scratch.work / "again.obj", true);
+  BOOST_TEST((reused.vt == automatic.vt));
+  BOOST_TEST((reused.ft == automatic.ft));
+
+  // a closed genus-0 mesh: the cones are the selected vertices of line 1, each on a seam
+  Scratch sphere;
+  const std::string fandisk = mbp_test::core_mesh("fandisk.off");
+  const Run f = sphere.run({fandisk, "f.obj", "--write-seams=f.selection.txt"});
+  BOOST_REQUIRE_EQUAL(f.code, 0);
+  std::ifstream in(sphere.work / "f.selection.txt");
+  std::string cone_line;
+  BOOST_REQUIRE(std::getline(in, cone_line));
+  std::istringstream cone_numbers(cone_line);
+  std::set<std::size_t> cones;
+  for(std::size_t c = 0; cone_numbers >> c;)
+    cones.insert(c);
+  BOOST_TEST(cones.size() == 8u);
+  std::set<std::size_t> on_seam;
+  for(const auto& e : read_selection_edges((sphere.work / "f.selection.txt").string()))
+  {
+    on_seam.insert(e.first);
+    on_seam.insert(e.second);
+  }
+  for(std::size_t c : cones)
+    BOOST_TEST(on_seam.count(c) == 1u);
+  BOOST_TEST(contains(f.out, "| automatic seams "), f.out);
+  BOOST_TEST(contains(f.out, " edges, 8 cones, "), f.out);
+}
+
+BOOST_AUTO_TEST_CASE(small_closed_and_punctured_meshes_get_automatic_seams)
+{
+  // an octahedron (6 vertices): 2 cones at opposite vertices (8 would leave no interior
+  // vertex), joined through a third vertex: 2 seam edges
+  Scratch scratch;
+  scratch.write("octahedron.off", "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                                  "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n");
+  const Run r = scratch.run({"octahedron.off", "out.obj", "--json"});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  const boost::property_tree::ptree j = parse_json(r.out);
+  BOOST_TEST(j.get<int>("automatic_seams.cones") == 2);
+  BOOST_TEST(j.get<std::size_t>("seam_edges") == 2u);
+  BOOST_TEST(j.get<std::size_t>("uvs") == 7u);  // the middle vertex twice, the cones once
+  BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
+  // a punctured torus: two arcs from its border around the handle
+  scratch.write("torus.off", off_text(mbp_test::punctured_torus()));
+  const Run t = scratch.run({"torus.off", "torus.obj", "--json"});
+  BOOST_REQUIRE_EQUAL(t.code, 0);
+  const boost::property_tree::ptree tj = parse_json(t.out);
+  BOOST_TEST(tj.get<int>("automatic_seams.genus") == 1);
+  BOOST_TEST(tj.get<int>("automatic_seams.loops") == 2);
+  BOOST_TEST(tj.get<std::size_t>("quality.flipped_faces") == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(write_seams_of_a_disk_lists_none)
+{
+  Scratch scratch;
+  scratch.write("grid.off", grid_off);
+  const Run r = scratch.run({"grid.off", "out.obj", "--write-seams=none.selection.txt", "--json"});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  BOOST_TEST(contains(r.err, "note: the mesh is a disk, it needs no seams"), r.err);
+  BOOST_TEST(Scratch::read_text(scratch.work / "none.selection.txt") == "\n\n\n");
+  const boost::property_tree::ptree j = parse_json(r.out);
+  BOOST_TEST(j.get<std::string>("automatic_seams") == "null");
+  BOOST_TEST(j.get<std::size_t>("seam_edges") == 0u);
+  // a bad --write-seams is a command-line error
+  const Run bad = scratch.run({"grid.off", "out2.obj", "--write-seams="});
+  BOOST_TEST(bad.code == 2);
+  BOOST_TEST(contains(bad.err, "option --write-seams needs a file name"), bad.err);
+  // and the target is checked before the run like the other outputs: not the input
+  const Run same = scratch.run({"grid.off", "out3.obj", "--write-seams=grid.off"});
+  BOOST_TEST(same.code != 0);
+  BOOST_TEST(Scratch::read_text(scratch.work / "grid.off") == grid_off);
 }
 
 BOOST_AUTO_TEST_CASE(equal_border_loops_are_chosen_by_the_library_rule)

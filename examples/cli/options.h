@@ -40,6 +40,8 @@ struct Options
   std::string output;       // OUTPUT.obj or --output=FILE; empty: <input file stem>_uv.obj in the current directory
   std::string svg;          // empty: no picture
   std::string seams;        // --seams=FILE: a CGAL selection file of seam edges; empty: no seams
+                            // (automatic seams when the mesh is not a disk)
+  std::string write_seams;  // --write-seams=FILE: the seams used, as a CGAL selection file
   bool json = false;
   bool help = false;
   bool repair = true;       // --no-repair turns it off
@@ -78,13 +80,15 @@ inline std::string usage(const std::string& default_mesh)
     "                                 [--center=poisson|geodesic[:METHOD]|vertex:N]\n"
     "                                 [--distance=poisson|METHOD|straightest] [--border=auto|conformal|measured|circle]\n"
     "                                 [--solver=cholmod|ldlt] [--output=FILE] [--svg=FILE] [--json]\n"
+    "                                 [--write-seams=FILE.selection.txt]\n"
     "                                 [--no-repair] [--help]\n"
     "\n"
     "Flattens a disk-like triangle mesh with the measured boundary parameterization of\n"
     "\"Measured boundary parameterization based on Poisson's equation\": the longest border is\n"
     "laid out around a center vertex at its measured distances from it, and the interior is\n"
-    "the discrete conformal map with that border fixed. A closed mesh, or a mesh with handles,\n"
-    "is first cut open along seams (--seams).\n"
+    "the discrete conformal map with that border fixed. A mesh that is not a disk (closed, with\n"
+    "holes or with handles) is first cut open into a disk along seams: those of --seams, or\n"
+    "automatic seams (see --seams).\n"
     "\n"
     "  INPUT              a triangle mesh: .off, .obj, .ply or .stl, one connected component\n"
     "                     with at least one border (holes are allowed; the longest border is\n"
@@ -109,7 +113,16 @@ inline std::string usage(const std::string& default_mesh)
     "                     must cut the surface into a disk (holes are allowed): a tree of edges\n"
     "                     on a closed surface of genus 0, 2g independent loops for genus g\n"
     "                     (for a torus, a meridian and a longitude through one vertex), and no\n"
-    "                     closed loop that separates the surface\n"
+    "                     closed loop that separates the surface.\n"
+    "                     Without --seams, a mesh that is not a disk is cut automatically\n"
+    "                     (compute_disk_seams): 2g short loops on a closed surface of genus g,\n"
+    "                     arcs that join every border loop and cut every handle on a surface\n"
+    "                     with border, and on a closed surface of genus 0 a tree through 8 cone\n"
+    "                     vertices where the conformal scale factor is most extreme\n"
+    "  --write-seams=FILE.selection.txt\n"
+    "                     also write the seams of the cut (automatic or from --seams) as a CGAL\n"
+    "                     selection file, to edit and reuse with --seams: line 1 lists the cone\n"
+    "                     vertices, line 3 the seam edges (empty for a disk)\n"
     "  --center=poisson   center at the maximum of the boundary Poisson distance map (BPDM,\n"
     "                     default)\n"
     "  --center=geodesic[:METHOD]\n"
@@ -150,9 +163,10 @@ inline std::string usage(const std::string& default_mesh)
     "                     blended toward a circle, as little as needed, until none is left)\n"
     "  -h, --help         print this help and exit\n"
     "\n"
-    "The summary gives the number of vertices (V) and faces (F), with --seams the number of seam\n"
-    "edges and of UVs, the border (vertices, 3D length; a seam counts on both sides), the\n"
-    "center (0-based index in the input), the time of each stage of the parameterization in\n"
+    "The summary gives the number of vertices (V) and faces (F), with seams the number of seam\n"
+    "edges (and of cones for automatic seams) and of UVs, the border (vertices, 3D length; a\n"
+    "seam counts on both sides), the center (0-based index in the input), the time of each\n"
+    "stage of the parameterization in\n"
     "seconds, the factorizations and back-substitutions, and the\n"
     "distortion: angle distortion (the paper's conformal distortion), Sander's L2 stretch\n"
     "(1 is optimal), the area-weighted mean quasi-conformal distortion s1/s2 (1 is\n"
@@ -183,7 +197,7 @@ inline std::string parse_options(int argc, char** argv, Options& o)
   using internal::starts_with;
   std::vector<std::string> positional;
   bool seen_center = false, seen_distance = false, seen_solver = false, seen_svg = false, seen_json = false;
-  bool seen_output = false, seen_seams = false, seen_border = false;
+  bool seen_output = false, seen_seams = false, seen_border = false, seen_write_seams = false;
   bool options_ended = false;
 
   // `--name=value`: the value, or an error for a missing or repeated option.
@@ -305,6 +319,14 @@ inline std::string parse_options(int argc, char** argv, Options& o)
         return "option --seams needs a file name: --seams=FILE.selection.txt";
       o.seams = value;
     }
+    else if(arg == "--write-seams" || starts_with(arg, "--write-seams="))
+    {
+      if(!(error = value_of(arg, "--write-seams", seen_write_seams, value)).empty())
+        return error;
+      if(value.empty())
+        return "option --write-seams needs a file name: --write-seams=FILE.selection.txt";
+      o.write_seams = value;
+    }
     else if(arg == "--svg" || starts_with(arg, "--svg="))
     {
       if(!(error = value_of(arg, "--svg", seen_svg, value)).empty())
@@ -314,7 +336,7 @@ inline std::string parse_options(int argc, char** argv, Options& o)
       o.svg = value;
     }
     else
-      return "unknown option '" + arg + "' (see --help)";
+      return "unknown option '" + arg + "'";  // the program adds the hint to --help
   }
 
   // the automatic border's measured member: fast marching geodesics unless asked otherwise
