@@ -205,7 +205,7 @@ Result measured(Input& in, Measured& parameterizer, const std::string& method)
   Result r = run_method(in, parameterizer, method);
   if(!r.ok)
     return r;
-  r.center = std::size_t(parameterizer.center().idx());
+  r.center = (parameterizer.center() == Mesh::null_vertex()) ? none : std::size_t(parameterizer.center().idx());
   const auto& report = parameterizer.last_report();
   if(parameterizer.border_choice() == Measured::AUTOMATIC_BORDER && report.chosen_candidate >= 0)
   {
@@ -754,23 +754,37 @@ int main(int argc, char** argv)
             "their scale depends on the mesh resolution and only their shape (ordering, maximum) is used.\n\n";
     }
 
-    // ---- README picture: textured surface and its layout
+    // ---- README picture: what the package is for: the automatic border against CGAL's
+    // circle, textures and UV domains side by side, one color range
     {
-      const double hw = 330., hh = 330.;
-      Composite hero(2 * hw + 3 * gap + 150., hh + 64., zoom);
-      hero.center(in, hero.view(gap, 10., hw, hh, in, checkerboard(ours)), ours.center);
-      hero.nested(2 * gap + hw, 10., hw, hh, layout_svg(in, ours, range.first, range.second));
-      hero.distortion_bar(2 * hw + 3 * gap + 10., 50., hh - 80., range.first, range.second, "angle distortion");
-      hero.text(gap, hh + 32., in.title + ": checkerboard through the measured boundary parameterization (left) and "
-                                          "its UV domain (right)", 13.);
-      hero.text(gap, hh + 50., numbers(ours) + "  (CGAL's DCP with a circle border: " + numbers(circle) + ")", 12.,
+      MBPPP automatic_p;
+      automatic_p.set_border_choice(MBPPP::AUTOMATIC_BORDER);
+      Result automatic = measured(in, automatic_p, "automatic border");
+      if(!automatic.ok)
+        return EXIT_FAILURE;
+      normalize_uv(in, automatic);
+      const auto hero_range = distortion_range({&automatic, &circle});
+      const double hw = 250., hh = 250.;
+      Composite hero(4 * hw + 5 * gap + 150., hh + 84., zoom);
+      hero.view(gap, 10., hw, hh, in, checkerboard(automatic));
+      hero.nested(2 * gap + hw, 10., hw, hh, layout_svg(in, automatic, hero_range.first, hero_range.second));
+      hero.view(3 * gap + 2 * hw, 10., hw, hh, in, checkerboard(circle));
+      hero.nested(4 * gap + 3 * hw, 10., hw, hh, layout_svg(in, circle, hero_range.first, hero_range.second));
+      hero.distortion_bar(4 * hw + 5 * gap + 10., 50., hh - 80., hero_range.first, hero_range.second,
+                          "angle distortion");
+      hero.text(gap, hh + 32., in.title + ": the automatic border (" + automatic.note + "), texture and UV domain",
+                13.);
+      hero.text(gap, hh + 50., numbers(automatic), 12., false, "start", "#444444");
+      hero.text(3 * gap + 2 * hw, hh + 32., "CGAL's discrete conformal map with its circle border", 13.);
+      hero.text(3 * gap + 2 * hw, hh + 50., numbers(circle), 12., false, "start", "#444444");
+      hero.text(gap, hh + 72., "UV domains colored by per-face angle distortion, one color range for both.", 12.,
                 false, "start", "#444444");
       if(!write_file(work_dir / "hero.svg", hero.document()))
         return EXIT_FAILURE;
       md << "## hero.png: the README picture\n\n"
-         << in.title << ": the checkerboard texture through the measured boundary parameterization and its UV "
-                        "domain colored by angle distortion; "
-         << numbers(ours) << " (CGAL's DCP with a circle border: " << numbers(circle) << ").\n\n";
+         << in.title << ": the checkerboard texture and the UV domain of the automatic border ("
+         << automatic.note << "; " << numbers(automatic) << ") beside those of CGAL's discrete conformal map "
+         << "with its circle border (" << numbers(circle) << "); the two UV domains share one color range.\n\n";
     }
   }
 
