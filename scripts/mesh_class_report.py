@@ -82,10 +82,18 @@ def main():
             try:
                 j = json.loads(out)
                 flips = j["quality"]["flipped_faces"]
+                # The center is null when no member of the automatic border needed it.
+                center_uv = j["center"]["uv"] if j.get("center") else []
                 finite = all(math.isfinite(float(x)) for x in
-                             [j["quality"]["angle_distortion"], j["quality"]["l2_stretch"]] + j["center"]["uv"])
-                detail = "V %d, F %d, border %d, flipped faces %d, angle distortion %.4g%s" % (
-                    j["vertices"], j["faces"], j["border"]["vertices"], flips, j["quality"]["angle_distortion"],
+                             [j["quality"]["angle_distortion"], j["quality"]["l2_stretch"]] + center_uv)
+                seams = j.get("automatic_seams")
+                kept = j.get("border_choice", {}).get("chosen")
+                detail = "V %d, F %d, %sborder %d, %sflipped faces %d, angle distortion %.4g%s" % (
+                    j["vertices"], j["faces"],
+                    "automatic seams: %d edges, %d cones; " % (seams["seam_edges"], seams["cones"]) if seams else "",
+                    j["border"]["vertices"],
+                    "kept %s (blend %.3g); " % (kept["kind"], kept["blend"]) if kept else "",
+                    flips, j["quality"]["angle_distortion"],
                     ", repaired (blend %.3g)" % j["repair"]["blend"] if j["repair"]["repaired"] else "")
                 if flips != 0 or not finite or "out.obj" not in left:
                     problem = "invalid result"
