@@ -14,7 +14,7 @@
 //   measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]
 //                             [--center=poisson|geodesic[:METHOD]|vertex:N]
 //                             [--distance=poisson|METHOD|straightest] [--border=auto|conformal|measured|circle]
-//                             [--solver=cholmod|ldlt] [--svg=FILE] [--json] [--no-repair] [--help]
+//                             [--solver=cholmod|cholmod-nd|ldlt] [--svg=FILE] [--json] [--no-repair] [--help]
 //
 // Reads OFF, OBJ, PLY or STL (default: a real mesh of the project's data, or a generated
 // curved disk when that file is missing), maps the longest border, and writes an OBJ with
@@ -402,6 +402,10 @@ mbp_cli::Failure parameterize_mesh(const TriangleMesh& tm, const Mesh& mesh, con
   if(options.solver == mbp_cli::Solver::cholmod)
     result = run_parameterization<SMP::Cholmod_supernodal_cholesky_traits>(tm, bhd, locator, distance, options,
                                                                            uvmap, parameterized, border);
+  else if(options.solver == mbp_cli::Solver::cholmod_nd)
+    result = run_parameterization<SMP::Cholmod_nested_dissection_cholesky_traits>(tm, bhd, locator, distance,
+                                                                                  options, uvmap, parameterized,
+                                                                                  border);
   else
 #endif
     result = run_parameterization<CGAL::Default>(tm, bhd, locator, distance, options, uvmap, parameterized,

@@ -423,6 +423,7 @@ BOOST_AUTO_TEST_CASE(obj_holds_the_library_result)
   std::vector<std::string> solvers{"ldlt"};
 #ifdef MBP_CLI_HAS_CHOLMOD
   solvers.push_back("cholmod");
+  solvers.push_back("cholmod-nd");
 #endif
   for(const std::string& solver : solvers)
   {

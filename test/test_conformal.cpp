@@ -223,10 +223,58 @@ MBP_TIERED_TEST_CASE(every_solver_gives_the_same_parameterization)
   BOOST_TEST(a.center() == c.center());
   BOOST_TEST(relative_difference(m, cholmod, ldlt) <= 1e-9);
   BOOST_TEST(c.last_report().statistics.factorizations == 2);
+  UV_map nested = new_uv(m, "v:nested");
+  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
+                                          SMP::Poisson_border_distance<Mesh>,
+                                          SMP::Cholmod_nested_dissection_cholesky_traits> d;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, d, mbp_test::longest_border(m), nested), SMP::OK);
+  BOOST_TEST(a.center() == d.center());
+  BOOST_TEST(relative_difference(m, nested, ldlt) <= 1e-9);
 #else
   BOOST_TEST_MESSAGE("CHOLMOD not available in this build: CHOLMOD solver not tested");
 #endif
 }
+
+#ifdef MBP_WITH_CHOLMOD
+// The 5-point Laplacian of an n x n grid with Dirichlet border: the orderings give the same
+// solution, and nested dissection fills less than AMD (the grid is its textbook case).
+BOOST_AUTO_TEST_CASE(cholmod_orderings_solve_alike_and_nested_dissection_fills_less)
+{
+  const int n = 120, N = n * n;
+  std::vector<Eigen::Triplet<double> > t;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      const int r = i * n + j;
+      t.emplace_back(r, r, 4.);
+      if(i > 0)     t.emplace_back(r, r - n, -1.);
+      if(i + 1 < n) t.emplace_back(r, r + n, -1.);
+      if(j > 0)     t.emplace_back(r, r - 1, -1.);
+      if(j + 1 < n) t.emplace_back(r, r + 1, -1.);
+    }
+  SMP::Cholmod_supernodal_cholesky_traits::Matrix A(N, N);
+  A.eigen_object().setFromTriplets(t.begin(), t.end());
+  Eigen::MatrixXd b = Eigen::MatrixXd::Ones(N, 2), x_amd, x_nd;
+  b.col(1).setLinSpaced(N, -1., 1.);
+
+  SMP::Cholmod_supernodal_cholesky_traits amd;
+  SMP::Cholmod_nested_dissection_cholesky_traits nd;
+  BOOST_TEST(amd.ordering() == SMP::Cholmod_supernodal_cholesky_traits::AMD);
+  BOOST_TEST(nd.ordering() == SMP::Cholmod_supernodal_cholesky_traits::NESTED_DISSECTION);
+  double D = 0.;
+  BOOST_REQUIRE(amd.factor(A, D));
+  BOOST_REQUIRE(nd.factor(A, D));
+  BOOST_REQUIRE(amd.solve(b, x_amd));
+  BOOST_REQUIRE(nd.solve(b, x_nd));
+  const Eigen::MatrixXd residual = A.eigen_object() * x_nd - b;
+  BOOST_TEST(residual.cwiseAbs().maxCoeff() <= 1e-9);
+  BOOST_TEST((x_nd - x_amd).cwiseAbs().maxCoeff() <= 1e-9 * x_amd.cwiseAbs().maxCoeff());
+  BOOST_TEST_MESSAGE("factor nonzeros: AMD " << amd.factor_nonzeros() << ", nested dissection "
+                     << nd.factor_nonzeros());
+  BOOST_TEST(nd.factor_nonzeros() > std::size_t(N));
+  BOOST_TEST(nd.factor_nonzeros() < amd.factor_nonzeros());
+}
+#endif
 
 MBP_TIERED_TEST_CASE(result_is_valid_and_better_than_the_circle_on_open_patches)
 {
