@@ -14,7 +14,7 @@
 //   border_comparison [MESH_DIR]      (default: ../shared/data/meshes, as configured)
 //
 // Prints one row per mesh: V, F, border length, the paper's angle distortion and Sander's L2
-// stretch for both borders (METHOD.md section 5), flipped faces, and whether the measured
+// stretch for both borders (user manual: Measuring a parameterization), flipped faces, and whether the measured
 // polygon is convex. Meshes that are not disks (several components or borders, handles,
 // closed) are listed as skipped with the reason.
 

@@ -41,7 +41,7 @@
 //                   (BLEND_TOWARD_CIRCLE): for every mesh where it was needed, the distortion
 //                   before and after, the blend, the interior kept, the time of the check and
 //                   repair and of the whole call.
-// Distortion: SMP::measure_quality() (METHOD.md section 5): angle_distortion (the paper's
+// Distortion: SMP::measure_quality() (user manual: Measuring a parameterization): angle_distortion (the paper's
 // conformal distortion), l2_stretch (Sander's L2, 1 = optimal), flipped_faces.
 // Time: wall-clock seconds of SMP::parameterize(), median of N interleaved runs (run 1 of every
 // method, then run 2, ...); load from other processes is reported per row (1-minute load

@@ -25,7 +25,7 @@
 //   seam length   total 3D length of the seam edges (BFF: the cut edges of its output, the
 //                 border edges of its UV mesh that are interior edges of the input), divided
 //                 by sqrt(3D area) so that meshes compare
-//   angle         the paper's angle distortion (measure_quality.h, METHOD.md section 5)
+//   angle         the paper's angle distortion (measure_quality.h; user manual: Measuring a parameterization)
 //   area          the area-weighted standard deviation of log(A_uv / A_3D) over the faces:
 //                 sqrt(sum_T A_T (l_T - m)^2 / sum_T A_T), l_T = log(A_uv,T / A_3D,T),
 //                 m = sum_T A_T l_T / sum_T A_T. A global scale of the layout adds a constant

@@ -10,7 +10,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CENTER_SELECTION_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CENTER_SELECTION_H
 
-// The deterministic argmax shared by the center locators (METHOD.md section 3, step 1).
+// The deterministic argmax shared by the center locators (user manual: The method in a page).
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

@@ -11,7 +11,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_FAST_MARCHING_H
 
 // Fast marching geodesic distances on a triangulated surface: Kimmel & Sethian, "Computing
-// geodesic paths on manifolds", PNAS 95 (1998). The paper's GDM (METHOD.md section 3, step 2)
+// geodesic paths on manifolds", PNAS 95 (1998). The paper's GDM (user manual: The method in a page)
 // and the multi-source BGDM of step 1.
 //
 // The algorithm solves the eikonal equation |grad T| = 1 with T = 0 at the sources, in the

@@ -10,8 +10,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_LAPLACIAN_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_LAPLACIAN_H
 
-// Edge weights and the one Laplacian assembly over an indexed triangle set (METHOD.md
-// section 2).
+// Edge weights and the one Laplacian assembly over an indexed triangle set (user
+// manual: The method in a page).
 //
 // Faces are triples of local vertex indices. A weight policy gives, for a face f and two of
 // its corners a != b, the weight `w(f, a, b)` that face f contributes to the directed edge

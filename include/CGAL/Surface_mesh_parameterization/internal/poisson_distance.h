@@ -10,7 +10,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POISSON_DISTANCE_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POISSON_DISTANCE_H
 
-// Paper Eq. 1 on a Parameterization_patch_3 (METHOD.md section 2):
+// Paper Eq. 1 on a Parameterization_patch_3 (user manual: The method in a page):
 //   sum_j w_ij (f_i - f_j) = d_i g_i  on the unknowns,  f = 0 on the constrained vertices,
 // i.e. the normalised Laplacian equation  Delta f = -g  multiplied by d_i = sum_j w_ij.
 

@@ -10,7 +10,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H
 
-// Step 3 of the method (METHOD.md section 3): the polar border map, placed as CGAL's
+// Step 3 of the method (user manual: The method in a page): the polar border map, placed as CGAL's
 // circular border parameterizers place theirs.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>

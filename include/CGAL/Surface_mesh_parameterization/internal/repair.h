@@ -10,7 +10,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_REPAIR_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_REPAIR_H
 
-// Validity of a parameterization of a patch (METHOD.md section 4): the one-to-one test.
+// Validity of a parameterization of a patch (user manual: Validity and repair): the one-to-one test.
 //
 // The one-to-one test. Orient every border curve of the patch so that the faces are on its
 // left: the outer border counterclockwise, each hole clockwise. If every real face is

@@ -11,7 +11,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_STRAIGHTEST_GEODESIC_H
 
 // The straightest geodesic distance of Lee et al. (2006), the "cutting plane" method behind the
-// paper's MBPSGP (paper sections 2.1-2.2, Figs. 2, 3 and 5; METHOD.md section 3 step 2): the
+// paper's MBPSGP (paper sections 2.1-2.2, Figs. 2, 3 and 5; user manual: The method in a page): the
 // path from a source vertex to a target vertex is the intersection of the surface with the
 // plane through both vertices and the normal at the source, followed triangle by triangle from
 // the source towards the target. The path need not exist (paper Fig. 2: the traced curve
