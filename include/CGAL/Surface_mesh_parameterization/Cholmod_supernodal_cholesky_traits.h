@@ -38,13 +38,13 @@ namespace Surface_mesh_parameterization {
 /// The fill-reducing ordering is chosen, not left to CHOLMOD's default sequence of trials:
 /// `AMD` (approximate minimum degree) by default, or `NESTED_DISSECTION` (METIS's nested
 /// dissection, CHOLMOD's `CHOLMOD_METIS`). Measured on the package's interior Laplacians
-/// (`benchmark/README.md`, section *CHOLMOD ordering*): nested dissection gives 30-35% less
-/// fill and a numeric factorization 1.5 times as fast from 179k vertices up, but computing it
-/// costs more than it saves in a single factorization (714k vertices: 4.4 s against 2.6 s
-/// for AMD, analysis included), and every system of a call has its own pattern. The
-/// parameterizers default-construct their traits: `Cholmod_nested_dissection_cholesky_traits`
-/// selects nested dissection as a type. The symbolic
-/// analysis (ordering and supernodal structure) is kept and reused when the same object
+/// (`benchmark/README.md`, section *CHOLMOD ordering*): from 179k vertices up, nested
+/// dissection gives 29-38% less fill and a numeric refactorization up to 1.5 times as fast,
+/// but computing it costs more than it saves in a single factorization (714k vertices: 4.4 s
+/// against 2.6 s for AMD, analysis included), and every system of a call has its own
+/// pattern. The parameterizers default-construct their traits:
+/// `Cholmod_nested_dissection_cholesky_traits` selects nested dissection as a type. The
+/// symbolic analysis (ordering and supernodal structure) is kept and reused when the same object
 /// factorizes a matrix with the same pattern again (only the numeric factorization is
 /// redone): with nested dissection, such refactorizations are the fastest.
 ///
@@ -238,9 +238,10 @@ private:
 /// `Measured_conformal_parameterizer_3<Mesh, Poisson_center_locator<Mesh>,
 /// Poisson_border_distance<Mesh>, Cholmod_nested_dissection_cholesky_traits>`.
 ///
-/// The choice for large meshes short of memory: the factor has 30-35% fewer nonzeros than
-/// with AMD (714k vertices: 35.3M against 54.6M), for a slower first factorization (4.4 s
-/// against 2.6 s there; see `benchmark/README.md`, section *CHOLMOD ordering*).
+/// The choice for large meshes short of memory: from 179k vertices up the factor has 29-38%
+/// fewer nonzeros than with AMD (714k vertices: 35.3M against 54.6M; 13% at 45k), for a
+/// slower first factorization (4.4 s against 2.6 s at 714k; see `benchmark/README.md`,
+/// section *CHOLMOD ordering*).
 class Cholmod_nested_dissection_cholesky_traits : public Cholmod_supernodal_cholesky_traits
 {
 public:
