@@ -930,6 +930,33 @@ BOOST_AUTO_TEST_CASE(a_sequential_call_starts_no_thread)
     BOOST_REQUIRE_EQUAL(patch.build_disk(m, bhd, get(CGAL::vertex_point, m)), SMP::OK);
     BOOST_REQUIRE(patch.interior_vertices().size() >= 10000u);
   }
+  // the patch-level step that Measured_conformal_parameterizer_3 composes: a Sequential_tag
+  // measured border leaves the patch's later multi-column solves (the automatic border's
+  // batch of candidate layouts) single-threaded; a Parallel_tag one lets them use two threads
+  // (the control that this solve reaches the threaded path)
+  {
+    const auto threads_of_a_batch_after_the_border = [&](auto border) {
+      Patch patch;
+      BOOST_REQUIRE_EQUAL(patch.build_disk(m, bhd, get(CGAL::vertex_point, m)), SMP::OK);
+      std::vector<Eigen::Vector2d> border_uv;
+      BOOST_REQUIRE_EQUAL(border.parameterize_border(patch, border_uv, true), SMP::OK);
+      Eigen::MatrixXd values = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(border_uv.size()), 4), rhs, x;
+      for(std::size_t k = 0; k < border_uv.size(); ++k)
+        values.row(static_cast<Eigen::Index>(k)) << border_uv[k].x(), border_uv[k].y(), 1., -border_uv[k].x();
+      patch.interior_rhs_from_border(values, rhs);
+      const long before = SMP::internal::threads_started();
+      BOOST_REQUIRE_EQUAL(patch.solve_interior(rhs, x), SMP::OK);
+      const long started = SMP::internal::threads_started() - before;
+      // the solve is right whatever the threads: constant border values give a constant
+      BOOST_TEST((x.col(2).array() - 1.).abs().maxCoeff() < 1e-9);
+      BOOST_TEST((x.col(3) + x.col(0)).cwiseAbs().maxCoeff() <= 1e-12 * x.col(0).cwiseAbs().maxCoeff());
+      return started;
+    };
+    BOOST_TEST(threads_of_a_batch_after_the_border(SMP::Measured_border_parameterizer_3<Mesh>()) == 0);
+    typedef SMP::Measured_border_parameterizer_3<Mesh, CGAL::Default, CGAL::Default, CGAL::Default,
+                                                 CGAL::Parallel_tag> Parallel_border;
+    BOOST_TEST(threads_of_a_batch_after_the_border(Parallel_border()) >= 1);
+  }
   typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default, CGAL::Default, CGAL::Parallel_tag>
     Parallel;
   for(Full::Border_choice choice : {Full::MEASURED_BORDER, Full::AUTOMATIC_BORDER})
