@@ -925,11 +925,6 @@ BOOST_AUTO_TEST_CASE(a_sequential_call_starts_no_thread)
     p[2] = 0.3 * p[0] * p[0] - 0.2 * p[1] * p[1] + 0.1 * p[0] * p[1];
   Mesh m = make(soup);
   const halfedge_descriptor bhd = SMP::main_border(m).first;
-  {
-    Patch patch;
-    BOOST_REQUIRE_EQUAL(patch.build_disk(m, bhd, get(CGAL::vertex_point, m)), SMP::OK);
-    BOOST_REQUIRE(patch.interior_vertices().size() >= 10000u);
-  }
   // the patch-level step that Measured_conformal_parameterizer_3 composes: a Sequential_tag
   // measured border leaves the patch's later multi-column solves (the automatic border's
   // batch of candidate layouts) single-threaded; a Parallel_tag one lets them use two threads
@@ -938,6 +933,7 @@ BOOST_AUTO_TEST_CASE(a_sequential_call_starts_no_thread)
     const auto threads_of_a_batch_after_the_border = [&](auto border) {
       Patch patch;
       BOOST_REQUIRE_EQUAL(patch.build_disk(m, bhd, get(CGAL::vertex_point, m)), SMP::OK);
+      BOOST_REQUIRE(patch.interior_vertices().size() >= 10000u);
       std::vector<Eigen::Vector2d> border_uv;
       BOOST_REQUIRE_EQUAL(border.parameterize_border(patch, border_uv, true), SMP::OK);
       Eigen::MatrixXd values = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(border_uv.size()), 4), rhs, x;
