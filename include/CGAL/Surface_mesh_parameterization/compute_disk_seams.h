@@ -15,9 +15,11 @@
 /// topological disk, for `CGAL::Seam_mesh`.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/cone_placement.h>
-#include <CGAL/Surface_mesh_parameterization/internal/cut_graph.h>
-#include <CGAL/Surface_mesh_parameterization/internal/sparse_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/seams/cone_placement.h>
+#include <CGAL/Surface_mesh_parameterization/internal/seams/cut_graph.h>
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/factorized_system.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -132,7 +134,7 @@ struct Disk_seams_report
   /// cut paths replaced by shorter ones
   int shortened_paths = 0;
   /// factorizations and back-substitutions of the cone placement
-  internal::Solver_statistics statistics;
+  Solver_statistics statistics;
   /// time of the call (wall clock, seconds)
   double seconds = 0.;
 };
@@ -574,8 +576,7 @@ Error_code compute_disk_seams(const TriangleMesh& tm, SeamEdgeMap seam_edges, Se
   {
     report.genus = s.genus();
     report.number_of_border_loops = s.border_loops.size();
-    report.problem = internal::cut_to_disk<typename internal::Get_solver_traits<Default>::type>(s, options, cut,
-                                                                                                 cones, report);
+    report.problem = internal::cut_to_disk<Default_sparse_cholesky_traits>(s, options, cut, cones, report);
   }
   report.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   if(report.problem != NO_PROBLEM)

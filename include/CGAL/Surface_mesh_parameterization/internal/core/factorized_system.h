@@ -7,16 +7,18 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SPARSE_SOLVER_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SPARSE_SOLVER_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_FACTORIZED_SYSTEM_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_FACTORIZED_SYSTEM_H
 
-// Factor once, back-substitute many times, through CGAL's
-// `SparseLinearAlgebraWithFactorTraits_d` concept (for example `CGAL::Eigen_solver_traits`).
+// A symmetric positive definite system factorized once and back-substituted many times,
+// through CGAL's `SparseLinearAlgebraWithFactorTraits_d` concept (for example
+// `CGAL::Eigen_solver_traits`).
 
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/concurrency.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/concurrency.h>
 
-#include <CGAL/Default.h>
 #include <CGAL/Eigen_solver_traits.h>
 
 #include <Eigen/Dense>
@@ -34,22 +36,7 @@
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
-
-/// \ingroup PkgSurfaceMeshParameterizationMeasured
-/// The default sparse solver of this package: Eigen's simplicial LDLT Cholesky
-/// factorization, through CGAL's `Eigen_solver_traits` (a model of
-/// `SparseLinearAlgebraWithFactorTraits_d`).
-typedef CGAL::Eigen_solver_traits<
-          Eigen::SimplicialLDLT<CGAL::Eigen_sparse_matrix<double>::EigenType> >
-        Default_sparse_cholesky_traits;
-
 namespace internal {
-
-template <class SolverTraits>
-struct Get_solver_traits
-{
-  typedef typename CGAL::Default::Get<SolverTraits, Default_sparse_cholesky_traits>::type type;
-};
 
 // Detects matrices that wrap an `Eigen::SparseMatrix<double>` (CGAL's `Eigen_sparse_matrix`),
 // which can be filled without keeping a second copy of the triplets alive.
@@ -145,39 +132,34 @@ void ldlt_block_solve(const LDLT& solver, const Eigen::MatrixXd& B, Eigen::Matri
     X = Y;
 }
 
-// Counters of the numerical work, to check and report reuse of factorizations.
-struct Solver_statistics
+// A solver traits object of its own for one system: copies of CGAL's Eigen_solver_traits
+// share one solver (so two systems built from copies would overwrite each other's
+// factorization): a new one is default-constructed; other traits are copied.
+template <class SolverTraits>
+SolverTraits independent_traits(const SolverTraits& prototype)
 {
-  int factorizations = 0;
-  int back_substitutions = 0;
-  double factorization_seconds = 0.;
-  double back_substitution_seconds = 0.;
-
-  void add(const Solver_statistics& o)
-  {
-    factorizations += o.factorizations;
-    back_substitutions += o.back_substitutions;
-    factorization_seconds += o.factorization_seconds;
-    back_substitution_seconds += o.back_substitution_seconds;
-  }
-};
+  if constexpr(Is_eigen_solver_traits<SolverTraits>::value)
+    return SolverTraits();
+  else
+    return prototype;
+}
 
 // A symmetric positive definite system factorized once. The matrix lives on the heap because
 // `Eigen_solver_traits` keeps a pointer to it: moving this object keeps that pointer valid.
-// Each system default-constructs its own traits: copies of `Eigen_solver_traits` share one
-// solver object, so two systems built from copies of one traits object would overwrite each
-// other's factorization.
 template <class SolverTraits>
 class Factorized_system
 {
+  typedef std::chrono::steady_clock          Clock;
+
 public:
   typedef SolverTraits                       Solver_traits;
   typedef typename Solver_traits::Matrix     Matrix;
   typedef typename Solver_traits::Vector     Vector;
 
-  Factorized_system() = default;
+  explicit Factorized_system(const Solver_traits& traits = Solver_traits())
+    : m_traits(independent_traits(traits))
+  { }
 
-  bool is_factorized() const { return m_factorized; }
   // whether multi-column solves may use a second thread (CGAL's Parallel_tag)
   void set_parallel(bool parallel) { m_parallel = parallel; }
   int size() const { return m_n; }
@@ -203,94 +185,48 @@ public:
   // Solves A x = b with the factorization. Fails when the result is not finite.
   Error_code solve(const std::vector<double>& b, std::vector<double>& x)
   {
-    typedef std::chrono::steady_clock Clock;
     if(!m_factorized || static_cast<int>(b.size()) != m_n)
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-
     Vector B(m_n), X(m_n);
     for(int i = 0; i < m_n; ++i)
       B[i] = b[static_cast<std::size_t>(i)];
-
     const Clock::time_point start = Clock::now();
     const bool ok = m_traits.linear_solver(B, X);
-    m_stats.back_substitution_seconds += std::chrono::duration<double>(Clock::now() - start).count();
-    ++m_stats.back_substitutions;
+    count_solves(start, 1);
     if(!ok)
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-
     x.resize(static_cast<std::size_t>(m_n));
     for(int i = 0; i < m_n; ++i)
     {
-      const double xi = X[i];
-      if(!std::isfinite(xi))
+      x[static_cast<std::size_t>(i)] = X[i];
+      if(!std::isfinite(X[i]))
         return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
-      x[static_cast<std::size_t>(i)] = xi;
     }
     return OK;
   }
 
   // Solves A X = B for every column of B (n x k): with CGAL's Eigen_solver_traits in one
-  // pass over the factor, otherwise column by column. Counts k back-substitutions.
+  // pass over the factor, with traits that have a block solve through it, otherwise column by
+  // column. Counts k back-substitutions.
   Error_code solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
   {
-    typedef std::chrono::steady_clock Clock;
     if(!m_factorized || B.rows() != m_n)
       return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
     const Clock::time_point start = Clock::now();
     bool ok = true;
     if constexpr(Is_eigen_solver_traits<Solver_traits>::value)
-    {
-      if constexpr(Is_simplicial_ldlt<typename Solver_traits::Solver>::value)
-      {
-        // many columns, with Parallel_tag: two threads, each with half of them (the factor is
-        // only read)
-        const Eigen::Index k = B.cols();
-        if(m_parallel && k >= 4 && m_n >= 10000)
-        {
-          const Eigen::Index half = k / 2;
-          Eigen::MatrixXd X2;
-          const Eigen::MatrixXd B1 = B.leftCols(half), B2 = B.rightCols(k - half);
-          std::future<void> other = start_thread([&] {
-            ldlt_block_solve(m_traits.solver(), B2, X2);
-          });
-          Eigen::MatrixXd X1;
-          ldlt_block_solve(m_traits.solver(), B1, X1);
-          other.get();
-          X.resize(B.rows(), k);
-          X.leftCols(half) = X1;
-          X.rightCols(k - half) = X2;
-        }
-        else
-          ldlt_block_solve(m_traits.solver(), B, X);
-      }
-      else
-        X = m_traits.solver().solve(B);
-      ok = (m_traits.solver().info() == Eigen::Success);
-    }
+      ok = eigen_block_solve(B, X);
     else if constexpr(Has_block_solve<Solver_traits>::value)
       ok = m_traits.solve(B, X);
     else
-    {
-      X.resize(B.rows(), B.cols());
-      Vector b(m_n), x(m_n);
-      for(Eigen::Index j = 0; j < B.cols() && ok; ++j)
-      {
-        for(int i = 0; i < m_n; ++i)
-          b[i] = B(i, j);
-        ok = m_traits.linear_solver(b, x);
-        for(int i = 0; i < m_n; ++i)
-          X(i, j) = x[i];
-      }
-    }
-    m_stats.back_substitution_seconds += std::chrono::duration<double>(Clock::now() - start).count();
-    m_stats.back_substitutions += static_cast<int>(B.cols());
+      ok = column_by_column(B, X);
+    count_solves(start, static_cast<int>(B.cols()));
     return (ok && X.allFinite()) ? OK : ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   }
 
 private:
   Error_code factor_matrix(int n)
   {
-    typedef std::chrono::steady_clock Clock;
     m_factorized = false;
     m_n = n;
     const Clock::time_point start = Clock::now();
@@ -308,6 +244,55 @@ private:
     return OK;
   }
 
+  void count_solves(Clock::time_point start, int columns)
+  {
+    m_stats.back_substitution_seconds += std::chrono::duration<double>(Clock::now() - start).count();
+    m_stats.back_substitutions += columns;
+  }
+
+  // Eigen's solvers: SimplicialLDLT by the blocked solve (with Parallel_tag and many columns
+  // on a large system: two threads, each with half of the columns; the factor is only read).
+  bool eigen_block_solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
+  {
+    if constexpr(Is_simplicial_ldlt<typename Solver_traits::Solver>::value)
+    {
+      const Eigen::Index k = B.cols();
+      if(m_parallel && k >= 4 && m_n >= 10000)
+      {
+        const Eigen::Index half = k / 2;
+        Eigen::MatrixXd X1, X2;
+        const Eigen::MatrixXd B1 = B.leftCols(half), B2 = B.rightCols(k - half);
+        std::future<void> other = start_thread([&] { ldlt_block_solve(m_traits.solver(), B2, X2); });
+        ldlt_block_solve(m_traits.solver(), B1, X1);
+        other.get();
+        X.resize(B.rows(), k);
+        X.leftCols(half) = X1;
+        X.rightCols(k - half) = X2;
+      }
+      else
+        ldlt_block_solve(m_traits.solver(), B, X);
+    }
+    else
+      X = m_traits.solver().solve(B);
+    return m_traits.solver().info() == Eigen::Success;
+  }
+
+  bool column_by_column(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
+  {
+    X.resize(B.rows(), B.cols());
+    Vector b(m_n), x(m_n);
+    for(Eigen::Index j = 0; j < B.cols(); ++j)
+    {
+      for(int i = 0; i < m_n; ++i)
+        b[i] = B(i, j);
+      if(!m_traits.linear_solver(b, x))
+        return false;
+      for(int i = 0; i < m_n; ++i)
+        X(i, j) = x[i];
+    }
+    return true;
+  }
+
   Solver_traits m_traits;
   std::unique_ptr<Matrix> m_matrix;
   int m_n = 0;
@@ -320,4 +305,4 @@ private:
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SPARSE_SOLVER_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_FACTORIZED_SYSTEM_H

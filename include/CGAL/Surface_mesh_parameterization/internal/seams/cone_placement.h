@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CONE_PLACEMENT_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CONE_PLACEMENT_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SEAMS_CONE_PLACEMENT_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SEAMS_CONE_PLACEMENT_H
 
 // Greedy cone placement (Sawhney and Crane, "Boundary First Flattening", section on cone
 // singularities; after Ben-Chen, Gotsman and Bunin 2008): the conformal scale factor u of a
@@ -29,9 +29,9 @@
 // function of the current D, itself updated the same way (one back-substitution per cone).
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/cut_graph.h>
-#include <CGAL/Surface_mesh_parameterization/internal/laplacian.h>
-#include <CGAL/Surface_mesh_parameterization/internal/sparse_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/seams/cut_graph.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/factorized_system.h>
 
 #include <CGAL/number_type_config.h>
 
@@ -48,14 +48,6 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
-
-// Relative threshold of a degenerate face, as Parameterization_patch_3's: 2A <= 1e-12 l_max^2.
-inline bool is_degenerate_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& r)
-{
-  const double longest2 = (std::max)({(q - p).squaredNorm(), (r - q).squaredNorm(), (p - r).squaredNorm()});
-  const double double_area = (q - p).cross(r - p).norm();
-  return !(double_area > 1e-12 * longest2) || !std::isfinite(double_area);
-}
 
 // Per-vertex and per-face geometry of the Poisson problem.
 struct Curvature_data
@@ -265,4 +257,4 @@ private:
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CONE_PLACEMENT_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SEAMS_CONE_PLACEMENT_H

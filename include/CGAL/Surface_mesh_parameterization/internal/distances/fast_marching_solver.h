@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_FAST_MARCHING_SOLVER_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_FAST_MARCHING_SOLVER_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_FAST_MARCHING_SOLVER_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_FAST_MARCHING_SOLVER_H
 
 // The geodesic solver interface on a Parameterization_patch_3 (one class per method, the
 // source-independent work done once in the constructor and shared on the patch), with the
@@ -16,7 +16,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
-#include <CGAL/Surface_mesh_parameterization/internal/fast_marching.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/fast_marching.h>
 
 #include <cmath>
 #include <cstddef>
@@ -64,15 +64,15 @@ private:
 };
 
 // The solver of `Method` shared by everything that works on `patch`.
-template <class Method, class Patch>
-Geodesic_solver<Method>& shared_geodesic_solver(Patch& patch)
+template <class Method, class Disk>
+Geodesic_solver<Method>& shared_geodesic_solver(Disk& patch)
 {
   return patch.template shared_object<Geodesic_solver<Method> >();
 }
 
 // Distances from `sources` (local indices), one per patch vertex.
-template <class Method, class Patch>
-Error_code geodesic_distances(Patch& patch, const std::vector<int>& sources, std::vector<double>& distances)
+template <class Method, class Disk>
+Error_code geodesic_distances(Disk& patch, const std::vector<int>& sources, std::vector<double>& distances)
 {
   if(sources.empty())
     return ERROR_WRONG_PARAMETER;
@@ -86,4 +86,4 @@ Error_code geodesic_distances(Patch& patch, const std::vector<int>& sources, std
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_FAST_MARCHING_SOLVER_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_FAST_MARCHING_SOLVER_H

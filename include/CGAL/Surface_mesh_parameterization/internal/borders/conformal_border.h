@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CONFORMAL_BORDER_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CONFORMAL_BORDER_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_BORDERS_CONFORMAL_BORDER_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_BORDERS_CONFORMAL_BORDER_H
 
 // The conformal border: the border of Boundary First Flattening (Sawhney and Crane 2017)
 // with boundary scale factors 0, computed with the interior cotangent Laplacian L_II that the
@@ -30,9 +30,10 @@
 // so the polygon is convex.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/polar_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/borders/polar_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/number_type_config.h>
 
 #include <Eigen/Core>
@@ -58,24 +59,9 @@ struct Conformal_border_data
   std::vector<double> circle;      // c_k = pi (l_{k-1} + l_k) / sum l
 };
 
-// Sum of the 3D corner angles at every vertex of the patch (hole fillings included).
-template <class Patch>
-void angle_sums(const Patch& patch, std::vector<double>& sums)
-{
-  sums.assign(patch.number_of_vertices(), 0.);
-  for(const std::array<int, 3>& t : patch.faces_indices())
-    for(std::size_t k = 0; k < 3; ++k)
-    {
-      const Eigen::Vector3d& p = patch.point(static_cast<std::size_t>(t[k]));
-      const Eigen::Vector3d a = patch.point(static_cast<std::size_t>(t[(k + 1) % 3])) - p;
-      const Eigen::Vector3d b = patch.point(static_cast<std::size_t>(t[(k + 2) % 3])) - p;
-      sums[static_cast<std::size_t>(t[k])] += std::atan2(a.cross(b).norm(), a.dot(b));
-    }
-}
-
 // The 3D lengths of the border edges and the turning angles of the arc-length circle.
-template <class Patch>
-Error_code border_lengths(const Patch& patch, Conformal_border_data& out)
+template <class Disk>
+Error_code border_lengths(const Disk& patch, Conformal_border_data& out)
 {
   const std::vector<int>& border = patch.border();
   const std::size_t m = border.size();
@@ -99,14 +85,14 @@ Error_code border_lengths(const Patch& patch, Conformal_border_data& out)
 
 // Steps 1-3: the target turning angles, with one back-substitution of L_II (factorized by
 // the patch if it is not yet).
-template <class Patch>
-Error_code conformal_border_data(Patch& patch, Conformal_border_data& out)
+template <class Disk>
+Error_code conformal_border_data(Disk& patch, Conformal_border_data& out)
 {
   Error_code status = border_lengths(patch, out);
   if(status != OK)
     return status;
   std::vector<double> sums;
-  angle_sums(patch, sums);
+  angle_sums(patch.points(), patch.faces_indices(), sums);
   const std::vector<int>& interior = patch.interior_vertices();
   std::vector<double> defects(interior.size()), u;
   for(std::size_t r = 0; r < interior.size(); ++r)
@@ -114,7 +100,7 @@ Error_code conformal_border_data(Patch& patch, Conformal_border_data& out)
   status = patch.solve_interior(defects, u);
   if(status != OK)
     return status;
-  patch.border_rows_times_interior(u, out.correction);
+  patch.systems().interior()->fixed_rows_times_free(u, out.correction);
   const std::vector<int>& border = patch.border();
   out.curvature.resize(border.size());
   out.turning.resize(border.size());
@@ -206,46 +192,13 @@ inline Error_code polygon_from_turning_angles(const std::vector<double>& turning
   return OK;
 }
 
-// Whether the closed polygon is simple: no zero-length edge, no fold-back at a vertex, and no
-// two non-adjacent edges that meet (exact predicates; sweep along x).
-inline bool is_simple_polygon(const std::vector<Eigen::Vector2d>& p)
-{
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-  const std::size_t m = p.size();
-  if(m < 3)
-    return false;
-  auto point = [&p](std::size_t i) { return K::Point_2(p[i].x(), p[i].y()); };
-  for(std::size_t k = 0; k < m; ++k)
-  {
-    const K::Point_2 a = point((k + m - 1) % m), b = point(k), c = point((k + 1) % m);
-    if(b == c)
-      return false;
-    if(CGAL::orientation(a, b, c) == CGAL::COLLINEAR && (b - a) * (c - b) < 0.)
-      return false;  // the edge folds back onto the previous one
-  }
-  std::vector<std::array<double, 3> > edges(m);  // xmin, xmax, index
-  for(std::size_t k = 0; k < m; ++k)
-  {
-    const double xa = p[k].x(), xb = p[(k + 1) % m].x();
-    edges[k] = {{(std::min)(xa, xb), (std::max)(xa, xb), double(k)}};
-  }
-  std::sort(edges.begin(), edges.end());
-  for(std::size_t i = 0; i < m; ++i)
-    for(std::size_t j = i + 1; j < m && edges[j][0] <= edges[i][1]; ++j)
-    {
-      const std::size_t s = static_cast<std::size_t>(edges[i][2]), t = static_cast<std::size_t>(edges[j][2]);
-      if((s + 1) % m == t || (t + 1) % m == s)
-        continue;  // adjacent edges share a vertex (their fold-back was tested above)
-      if(CGAL::do_intersect(K::Segment_2(point(s), point((s + 1) % m)), K::Segment_2(point(t), point((t + 1) % m))))
-        return false;
-    }
-  return true;
-}
+// Bisection steps of the blend toward the circle when the conformal polygon is not simple.
+constexpr int simple_blend_bisection_steps = 20;
 
 // The polygon of the smallest blend t in [0, 1] for which it is simple: t = 0 when the
-// conformal border is simple, otherwise found by `steps` bisection steps (t = 1 is convex).
-// Fails only when no polygon closes.
-inline Error_code smallest_simple_blend(const Conformal_border_data& data, int steps, double& t,
+// conformal border is simple, otherwise found by simple_blend_bisection_steps bisection steps
+// (t = 1 is convex). Fails only when no polygon closes.
+inline Error_code smallest_simple_blend(const Conformal_border_data& data, double& t,
                                         std::vector<Eigen::Vector2d>& polygon, std::vector<double>& closed)
 {
   auto build = [&data](double blend, std::vector<Eigen::Vector2d>& p, std::vector<double>& l) {
@@ -261,7 +214,7 @@ inline Error_code smallest_simple_blend(const Conformal_border_data& data, int s
   double invalid = 0.;
   std::vector<Eigen::Vector2d> p;
   std::vector<double> l;
-  for(int step = 0; step < steps; ++step)
+  for(int step = 0; step < simple_blend_bisection_steps; ++step)
   {
     const double mid = 0.5 * (invalid + t);
     if(build(mid, p, l))
@@ -280,4 +233,4 @@ inline Error_code smallest_simple_blend(const Conformal_border_data& data, int s
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CONFORMAL_BORDER_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_BORDERS_CONFORMAL_BORDER_H

@@ -7,13 +7,15 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_BORDERS_POLAR_MAP_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_BORDERS_POLAR_MAP_H
 
 // Step 3 of the method (user manual: The method in a page): the polar border map, placed as CGAL's
 // circular border parameterizers place theirs.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
 
 #include <CGAL/number_type_config.h>
 
@@ -43,27 +45,6 @@ struct Polar_border
 // from the center (for example both sides of a slit that points at the center), and the
 // polygon would not be star-shaped.
 constexpr double min_angle_increment = 1e-12;
-
-// Relative tolerance of the convexity test: a turn counts as convex when
-// cross(e_prev, e_next) < -convexity_tolerance * |e_prev| |e_next| (clockwise polygon).
-constexpr double convexity_tolerance = 1e-12;
-
-// Whether the closed polygon, traversed clockwise, turns strictly right at every vertex.
-inline bool is_strictly_convex_clockwise(const std::vector<Eigen::Vector2d>& p)
-{
-  const std::size_t m = p.size();
-  if(m < 3)
-    return false;
-  for(std::size_t k = 0; k < m; ++k)
-  {
-    const Eigen::Vector2d e1 = p[k] - p[(k + m - 1) % m];
-    const Eigen::Vector2d e2 = p[(k + 1) % m] - p[k];
-    const double cross = e1.x() * e2.y() - e1.y() * e2.x();
-    if(!(cross < -convexity_tolerance * e1.norm() * e2.norm()))
-      return false;
-  }
-  return true;
-}
 
 // CGAL's placement of a border polygon: scales uniformly and translates `p` so that its
 // bounding box is centered in [0,1]^2 with its longest side spanning [0,1] (CGAL's circle:
@@ -126,8 +107,8 @@ inline Error_code place_polar_border(const std::vector<double>& angles, const st
 //   uv_k    = r_k (cos(-phi_k), sin(-phi_k))   (negative angles, as CGAL's circle),
 // then scaled uniformly and translated so that the bounding box is centered in [0,1]^2 with
 // its longest side spanning [0,1] (CGAL's circle: center (0.5,0.5), radius 0.5).
-template <class Patch>
-Error_code polar_border_map(const Patch& patch, std::size_t center,
+template <class Disk>
+Error_code polar_border_map(const Disk& patch, std::size_t center,
                             const std::vector<double>& radii, Polar_border& out)
 {
   const std::vector<int>& border = patch.border();
@@ -144,7 +125,7 @@ Error_code polar_border_map(const Patch& patch, std::size_t center,
   {
     const Eigen::Vector3d a = patch.point(static_cast<std::size_t>(border[k])) - c;
     const Eigen::Vector3d b = patch.point(static_cast<std::size_t>(border[(k + 1) % m])) - c;
-    theta[k] = std::atan2(a.cross(b).norm(), a.dot(b));
+    theta[k] = corner_angle(a, b);
     total += theta[k];
   }
   if(!(total > 0.) || !std::isfinite(total))
@@ -166,4 +147,4 @@ Error_code polar_border_map(const Patch& patch, std::size_t center,
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POLAR_MAP_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_BORDERS_POLAR_MAP_H

@@ -7,14 +7,14 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SOURCE_COMPONENTS_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SOURCE_COMPONENTS_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_SOURCE_COMPONENTS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_SOURCE_COMPONENTS_H
 
 // The component loop shared by the distance-map functions: every connected component that
 // holds a source is built as a patch and solved; results are written only when all succeed.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -72,7 +72,7 @@ Error_code distance_map_over_source_components(const TriangleMesh& tm,
       continue;
     }
 
-    Parameterization_patch_3<TriangleMesh, SolverTraits> patch;
+    Disk<TriangleMesh, SolverTraits> patch;
     Error_code status = patch.build_component(tm, seed, vpm);
     if(status != OK)
       return status;
@@ -102,4 +102,4 @@ Error_code distance_map_over_source_components(const TriangleMesh& tm,
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SOURCE_COMPONENTS_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_SOURCE_COMPONENTS_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CENTER_SELECTION_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CENTER_SELECTION_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_CENTER_SELECTION_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_CENTER_SELECTION_H
 
 // The deterministic argmax shared by the center locators (user manual: The method in a page).
 
@@ -111,4 +111,4 @@ int argmax_with_tie_break(const Patch& patch, const std::vector<double>& values)
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CENTER_SELECTION_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_CENTER_SELECTION_H

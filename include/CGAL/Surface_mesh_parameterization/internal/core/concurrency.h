@@ -7,16 +7,14 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CONCURRENCY_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CONCURRENCY_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_CONCURRENCY_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_CONCURRENCY_H
 
 // The one place where the package starts threads: only under CGAL::Parallel_tag (CGAL's
-// convention; CGAL::Sequential_tag, the default, starts none). Every thread started is
-// counted, so that tests can check that a sequential call starts none.
+// convention; CGAL::Sequential_tag, the default, starts none).
 
 #include <CGAL/tags.h>
 
-#include <atomic>
 #include <future>
 #include <type_traits>
 #include <utility>
@@ -29,18 +27,10 @@ namespace internal {
 template <class ConcurrencyTag>
 struct Is_parallel : std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag> {};
 
-// The number of threads the package started in this process.
-inline std::atomic<long>& threads_started()
-{
-  static std::atomic<long> count{0};
-  return count;
-}
-
 // Runs `f` in a new thread; the result is the future of its value.
 template <class F>
 auto start_thread(F&& f)
 {
-  ++threads_started();
   return std::async(std::launch::async, std::forward<F>(f));
 }
 
@@ -48,4 +38,4 @@ auto start_thread(F&& f)
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CONCURRENCY_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_CONCURRENCY_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_LAPLACIAN_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_LAPLACIAN_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_LAPLACIAN_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_LAPLACIAN_H
 
 // Edge weights and the one Laplacian assembly over an indexed triangle set (user
 // manual: The method in a page).
@@ -24,6 +24,8 @@
 // |x_i - x_j|^-r (the paper's Poisson distance map), mean value weights
 // tan(angle at i / 2) / |x_i - x_j| (Floater 2003; not symmetric).
 
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
+
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 
@@ -36,8 +38,6 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
-
-typedef std::array<int, 3> Face_indices;
 
 // The sparsity pattern of the vertex graph (every vertex with itself and its neighbours,
 // sorted), built once per patch. It assembles the Laplacian restricted to a set of unknowns
@@ -235,7 +235,7 @@ struct Mean_value_weight
     const Eigen::Vector3d& p = (*points)[static_cast<std::size_t>(t[static_cast<std::size_t>(a)])];
     const Eigen::Vector3d u = (*points)[static_cast<std::size_t>(t[static_cast<std::size_t>(b)])] - p;
     const Eigen::Vector3d v = (*points)[static_cast<std::size_t>(t[static_cast<std::size_t>(3 - a - b)])] - p;
-    const double alpha = std::atan2(u.cross(v).norm(), u.dot(v));
+    const double alpha = corner_angle(u, v);
     return std::tan(0.5 * alpha) / u.norm();  // |u| > 0: faces were checked non-degenerate
   }
 };
@@ -268,4 +268,4 @@ inline void mean_spoke_lengths(const std::vector<Face_indices>& faces,
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_LAPLACIAN_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_LAPLACIAN_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_STRAIGHTEST_GEODESIC_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_STRAIGHTEST_GEODESIC_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_STRAIGHTEST_GEODESIC_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_STRAIGHTEST_GEODESIC_H
 
 // The straightest geodesic distance of Lee et al. (2006), the "cutting plane" method behind the
 // paper's MBPSGP (paper sections 2.1-2.2, Figs. 2, 3 and 5; user manual: The method in a page): the
@@ -47,7 +47,7 @@
 //   after the loop test; kept as a guard).
 // Cost of a trace: proportional to the number of triangles and one-rings it crosses.
 
-#include <CGAL/Surface_mesh_parameterization/internal/triangle_adjacency.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_adjacency.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -534,4 +534,4 @@ private:
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_STRAIGHTEST_GEODESIC_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_STRAIGHTEST_GEODESIC_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_TRIANGLE_ADJACENCY_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_TRIANGLE_ADJACENCY_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_TRIANGLE_ADJACENCY_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_TRIANGLE_ADJACENCY_H
 
 // Adjacency of an indexed, consistently oriented, manifold triangle set (a patch): the face
 // across each edge, and the faces around each vertex. Used by the geodesic algorithms that
@@ -111,4 +111,4 @@ private:
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_TRIANGLE_ADJACENCY_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_TRIANGLE_ADJACENCY_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_GEODESIC_SOLVERS_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_GEODESIC_SOLVERS_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_GEODESIC_SOLVERS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_GEODESIC_SOLVERS_H
 
 // One solver class per geodesic method, working on a Parameterization_patch_3. A solver does
 // its source-independent work once in its constructor (adjacency, a triangle mesh copy, the
@@ -18,7 +18,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
-#include <CGAL/Surface_mesh_parameterization/internal/fast_marching_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/fast_marching_solver.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
@@ -250,4 +250,4 @@ private:
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_GEODESIC_SOLVERS_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_GEODESIC_SOLVERS_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DIRICHLET_ENGINE_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DIRICHLET_ENGINE_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_DIRICHLET_ENGINE_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_DIRICHLET_ENGINE_H
 
 // The one Dirichlet engine of the package, in the manner of libigl's min_quad_with_fixed
 // (precompute once, solve many) and of CGAL's Fixed_border_parameterizer_3 (only the weight
@@ -21,10 +21,14 @@
 // Symmetric weights (cotangent, spring) give a symmetric positive definite L_FF (at least
 // one fixed vertex per component), factorized with the solver traits' sparse Cholesky;
 // non-symmetric weights (mean value) with a sparse LU.
+//
+// With a single fixed vertex (the *ground*) on a connected triangle set, the engine also
+// solves the singular problem of the whole Laplacian with the value 0 at any other vertex
+// (solve_with_zero_at()): one factorization serves every such vertex.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/laplacian.h>
-#include <CGAL/Surface_mesh_parameterization/internal/sparse_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/laplacian.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/factorized_system.h>
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -43,7 +47,7 @@ template <class SolverTraits>
 class Dirichlet_engine
 {
 public:
-  Dirichlet_engine() = default;
+  explicit Dirichlet_engine(const SolverTraits& traits = SolverTraits()) : m_cholesky(traits) { }
   Dirichlet_engine(const Dirichlet_engine&) = delete;
   Dirichlet_engine& operator=(const Dirichlet_engine&) = delete;
 
@@ -85,7 +89,6 @@ public:
   }
 
   std::size_t number_of_free_vertices() const { return m_free.size(); }
-  std::size_t number_of_fixed_vertices() const { return m_fixed; }
   // the vertex of each row
   const std::vector<int>& free_vertices() const { return m_free; }
   // the row of vertex i, -1 for a fixed vertex
@@ -115,6 +118,45 @@ public:
     h.assign(m_fixed, 0.);
     for(const Coupling& c : m_coupling)
       h[static_cast<std::size_t>(c.fixed)] -= c.weight * x[static_cast<std::size_t>(c.row)];
+  }
+
+  // x = 0 on the fixed vertices and L_FF x_F = f_F, with f and x given per vertex.
+  Error_code solve_scattered(const std::vector<double>& f, std::vector<double>& x)
+  {
+    std::vector<double> rhs(m_free.size()), y;
+    for(std::size_t r = 0; r < m_free.size(); ++r)
+      rhs[r] = f[static_cast<std::size_t>(m_free[r])];
+    const Error_code status = solve(rhs, y);
+    if(status != OK)
+      return status;
+    x.assign(m_row.size(), 0.);
+    for(std::size_t r = 0; r < m_free.size(); ++r)
+      x[static_cast<std::size_t>(m_free[r])] = y[r];
+    return OK;
+  }
+
+  // For an engine with one fixed vertex (the ground) over a connected set: the x, one entry
+  // per vertex, with (L x)_i = f_i for every vertex i != s and x_s = 0 (f_s is not read).
+  // Set r = f off s and r_s = -sum_{i != s} f_i: then sum r = 0, so L y = r has the
+  // solutions y + c 1, one of which the grounded system gives, and x = y - y_s 1.
+  Error_code solve_with_zero_at(std::size_t s, const std::vector<double>& f, std::vector<double>& x)
+  {
+    if(s >= m_row.size() || m_free.size() + 1 != m_row.size())
+      return ERROR_WRONG_PARAMETER;
+    std::vector<double> r(f);
+    r[s] = 0.;
+    double sum = 0.;
+    for(double v : r)
+      sum += v;
+    r[s] = -sum;
+    const Error_code status = solve_scattered(r, x);
+    if(status != OK)
+      return status;
+    const double shift = x[s];
+    for(double& v : x)
+      v -= shift;
+    x[s] = 0.;
+    return OK;
   }
 
   // L_FF x = b (one entry per row). Fails when the result is not finite.
@@ -198,4 +240,4 @@ private:
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DIRICHLET_ENGINE_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CORE_DIRICHLET_ENGINE_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CUT_GRAPH_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CUT_GRAPH_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SEAMS_CUT_GRAPH_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SEAMS_CUT_GRAPH_H
 
 // Cut graphs on an indexed manifold triangle mesh: the edges along which a connected surface is
 // cut into a topological disk (compute_disk_seams.h).
@@ -587,4 +587,4 @@ inline int shorten_cut(const Indexed_surface& s, const std::vector<char>& termin
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_CUT_GRAPH_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_SEAMS_CUT_GRAPH_H

@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_FAST_MARCHING_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_FAST_MARCHING_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_FAST_MARCHING_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_FAST_MARCHING_H
 
 // Fast marching geodesic distances on a triangulated surface: Kimmel & Sethian, "Computing
 // geodesic paths on manifolds", PNAS 95 (1998). The paper's GDM (user manual: The method in a page)
@@ -60,7 +60,7 @@
 // with lazy deletion (stale entries are skipped when popped), a bounded amount of work per
 // update, no allocation per vertex.
 
-#include <CGAL/Surface_mesh_parameterization/internal/triangle_adjacency.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_adjacency.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -441,4 +441,4 @@ private:
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_FAST_MARCHING_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_FAST_MARCHING_H

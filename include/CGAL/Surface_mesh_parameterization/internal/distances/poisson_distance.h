@@ -7,16 +7,15 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POISSON_DISTANCE_H
-#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POISSON_DISTANCE_H
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_POISSON_DISTANCE_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_POISSON_DISTANCE_H
 
-// Paper Eq. 1 on a Parameterization_patch_3 (user manual: The method in a page):
+// Paper Eq. 1 on a checked disk (user manual: The method in a page):
 //   sum_j w_ij (f_i - f_j) = d_i g_i  on the unknowns,  f = 0 on the constrained vertices,
 // i.e. the normalised Laplacian equation  Delta f = -g  multiplied by d_i = sum_j w_ij.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/laplacian.h>
-#include <CGAL/Surface_mesh_parameterization/internal/sparse_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/laplacian.h>
 
 #include <cstddef>
 #include <vector>
@@ -28,8 +27,8 @@ namespace internal {
 // Boundary Poisson distance map: cotangent weights, the main border loop constrained. Uses
 // (and, on first use, creates) the patch's factorization of L_II. `values` gets one entry per
 // patch vertex (0 on the border loop).
-template <class Patch>
-Error_code boundary_poisson_distance(Patch& patch, std::vector<double>& values)
+template <class Disk>
+Error_code boundary_poisson_distance(Disk& patch, std::vector<double>& values)
 {
   const std::vector<int>& interior = patch.interior_vertices();
   const std::vector<double>& d = patch.cotangent_row_sums();
@@ -50,34 +49,29 @@ Error_code boundary_poisson_distance(Patch& patch, std::vector<double>& values)
 }
 
 // Poisson distance map from `sources` (local indices): spring weights |x_i - x_j|^(-r), every
-// other vertex of the patch unknown. One factorization of its own (recorded in the patch's
-// statistics). `values` gets one entry per patch vertex (0 at the sources).
-template <class Patch>
-Error_code spring_poisson_distance(Patch& patch, const std::vector<int>& sources,
-                                   double exponent, std::vector<double>& values)
+// other vertex of the disk unknown. One factorization of its own (recorded in the disk's
+// statistics). `values` gets one entry per disk vertex (0 at the sources).
+template <class Disk>
+Error_code spring_poisson_distance(Disk& disk, const std::vector<int>& sources, double exponent,
+                                   std::vector<double>& values)
 {
-  const std::size_t n = patch.number_of_vertices();
+  const std::size_t n = disk.number_of_vertices();
   if(sources.empty())
     return ERROR_WRONG_PARAMETER;
-  typename Patch::Engine engine;
-  const Spring_weight weight{&patch.faces_indices(), &patch.points(), &patch.single_edge_masks(), exponent};
-  Error_code status = engine.build(patch.pattern(), patch.faces_indices(), n, sources, weight);
+  auto engine = disk.systems().make_engine();
+  const Spring_weight weight{&disk.faces_indices(), &disk.points(), &disk.single_edge_masks(), exponent};
+  Error_code status = engine->build(disk.pattern(), disk.faces_indices(), n, sources, weight);
   values.assign(n, 0.);
-  if(status == OK && engine.number_of_free_vertices() > 0)
+  if(status == OK && engine->number_of_free_vertices() > 0)
   {
-    const std::vector<double>& d = engine.row_sums();
-    const std::vector<double>& g = patch.mean_spoke_lengths();
-    std::vector<double> rhs(engine.number_of_free_vertices()), x;
-    for(std::size_t r = 0; r < rhs.size(); ++r)
-    {
-      const std::size_t i = static_cast<std::size_t>(engine.free_vertices()[r]);
-      rhs[r] = d[i] * g[i];
-    }
-    status = engine.solve(rhs, x);
-    for(std::size_t r = 0; status == OK && r < x.size(); ++r)
-      values[static_cast<std::size_t>(engine.free_vertices()[r])] = x[r];
+    const std::vector<double>& d = engine->row_sums();
+    const std::vector<double>& g = disk.mean_spoke_lengths();
+    std::vector<double> f(n);
+    for(std::size_t i = 0; i < n; ++i)
+      f[i] = d[i] * g[i];
+    status = engine->solve_scattered(f, values);
   }
-  patch.add_statistics(engine.statistics());
+  disk.systems().add_statistics(engine->statistics());
   return status;
 }
 
@@ -85,4 +79,4 @@ Error_code spring_poisson_distance(Patch& patch, const std::vector<int>& sources
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 
-#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_POISSON_DISTANCE_H
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_POISSON_DISTANCE_H
