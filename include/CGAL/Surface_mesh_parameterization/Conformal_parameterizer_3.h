@@ -13,6 +13,7 @@
 /// \file Conformal_parameterizer_3.h
 
 #include <CGAL/Surface_mesh_parameterization/Automatic_border.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border.h>
 #include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
