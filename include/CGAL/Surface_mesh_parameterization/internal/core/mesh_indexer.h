@@ -61,6 +61,18 @@ public:
     return id;
   }
 
+  // the local index of `v`, given on first sight (no position recorded)
+  int add(vertex_descriptor v)
+  {
+    int id = index(v);
+    if(id >= 0)
+      return id;
+    id = static_cast<int>(m_vertices.size());
+    put(m_index_map, v, id + 1);
+    m_vertices.push_back(v);
+    return id;
+  }
+
   // the vertices and their positions, by local index
   const std::vector<vertex_descriptor>& vertices() const { return m_vertices; }
   std::vector<vertex_descriptor>& vertices() { return m_vertices; }
