@@ -205,7 +205,7 @@ private:
   {
     Parameterization_report& r = step.report;
     internal::Border_evaluator<Disk> evaluator(step.disk, step.members);
-    Error_code status = m_border.choose(step, evaluator);
+    Error_code status = internal::choose_border(m_border, step, evaluator);
     const double measured = r.center_seconds + r.distance_seconds + r.border_map_seconds;
     r.interior_seconds = clock.lap() - (Border_policy::searches ? measured : 0.);
     if(status != OK)
@@ -281,13 +281,11 @@ Error_code parameterize(TriangleMesh& mesh,
 /// The paper's measured boundary parameterization (MBPPP with the default policies):
 /// `Conformal_parameterizer_3` with the border policy `Measured_border<CenterLocator,
 /// BorderDistance>`.
-template <class TriangleMesh,
-          class CenterLocator = Poisson_center_locator,
-          class BorderDistance = Poisson_border_distance,
-          class SolverTraits = Default,
+template <class TriangleMesh, class CenterLocator = Poisson_center_locator,
+          class BorderDistance = Poisson_border_distance, class SolverTraits = Default,
           class ConcurrencyTag = CGAL::Sequential_tag>
-using Measured_conformal_parameterizer_3 =
-  Conformal_parameterizer_3<TriangleMesh, Measured_border<CenterLocator, BorderDistance>, SolverTraits, ConcurrencyTag>;
+using Measured_conformal_parameterizer_3 = Conformal_parameterizer_3<TriangleMesh,
+  Measured_border<CenterLocator, BorderDistance>, SolverTraits, ConcurrencyTag>;
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
