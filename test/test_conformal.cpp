@@ -469,11 +469,12 @@ MBP_TIERED_TEST_CASE(automatic_border_is_never_worse_than_its_members)
       const double circle = SMP::measure_quality(m, faces(m), circle_uv).angle_distortion;
       const double poisson = unrepaired_angle_distortion(m, Conformal(), "v:poisson");
       UV_map conformal_uv = new_uv(m, "v:conformal");
-      typedef mbp_test::Reporting_border<SMP::Conformal_border_parameterizer_3<Mesh> > Conformal_border;
+      typedef mbp_test::Reporting_border<SMP::Conformal_border_parameterizer_3<Mesh> > Reporting_conformal_border;
       Report conformal_border;  // the report of the border step inside CGAL's DCP
-      SMP::Discrete_conformal_map_parameterizer_3<Mesh, Conformal_border, LU> conformal_dcp(
-        Conformal_border{&conformal_border});
+      SMP::Discrete_conformal_map_parameterizer_3<Mesh, Reporting_conformal_border, LU> conformal_dcp(
+        Reporting_conformal_border{&conformal_border});
       BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal_dcp, mbp_test::longest_border(m), conformal_uv), SMP::OK);
+      BOOST_REQUIRE(conformal_border.status == SMP::OK);
       const double conformal = SMP::is_one_to_one_uv_map(m, faces(m), conformal_uv)
                                  ? SMP::measure_quality(m, faces(m), conformal_uv).angle_distortion
                                  : std::numeric_limits<double>::infinity();

@@ -126,6 +126,8 @@ Comparison compare_borders(mbp_test::Tier tier, const std::string& name)
   BOOST_REQUIRE_EQUAL(c.circle.status, SMP::OK);
   BOOST_REQUIRE_MESSAGE(c.measured.status == SMP::OK,
                         name << ": " << SMP::get_measured_error_message(c.measured.status));
+  BOOST_TEST(measured.status == SMP::OK);
+  BOOST_REQUIRE(measured.has_center);
   const vertex_descriptor center = mbp_test::vertex_at_position(mesh, measured.center);
   BOOST_TEST_MESSAGE(name << ": V " << num_vertices(mesh) << ", angle distortion circle "
                      << c.circle.q.angle_distortion << " measured " << c.measured.q.angle_distortion
