@@ -25,7 +25,7 @@
 #    and the same MBP_SHARED_MESH_DIR (the program's default mesh), and only the target
 #    measured_parameterization_cli is built (found by target name through CMake's file API,
 #    wherever its source and its binary are), with --jobs parallel jobs (default 2), which is
-#    also the number of processes of the comparison; the program runs one at a time.
+#    also the number of runs of the program at a time and of processes of the comparison.
 #  - Meshes: the core tier, i.e. every mesh file (.off, .obj, .ply, .stl) of CGAL's data meshes
 #    (MBP_CGAL_DATA_ARCHIVE, default Debian's /usr/share/doc/libcgal-dev/data.tar.gz, folder
 #    data/meshes, as the top CMakeLists.txt extracts it; here extracted once into
@@ -234,7 +234,6 @@ add_case "cli/bad-option/border-convex" cli "(command-line error)" "--border=con
   "out.obj --json --border=convex" "$usage_mesh" out.obj
 
 # -- runs --------------------------------------------------------------------------------------
-declare -A mesh_sha
 file_sha() { sha1sum "$1" | cut -c1-40; }
 
 # run_in FOLDER COMMAND...: runs COMMAND in FOLDER (emptied first) under the time limit: its
@@ -244,49 +243,73 @@ run_in() {
   shift
   rm -rf "$folder"
   mkdir -p "$folder"
-  t0=$(date +%s%N)
+  t0=${EPOCHREALTIME/[.,]/}
   if (cd "$folder" && exec timeout --kill-after=10 "$run_timeout" "$@" > stdout 2> stderr); then rc=0; else rc=$?; fi
-  t1=$(date +%s%N)
+  t1=${EPOCHREALTIME/[.,]/}
   echo "$rc" > "$folder/rc"
-  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f\n", (b - a) / 1e9 }' > "$folder/seconds"
+  printf '%d.%06d\n' $(( (t1 - t0) / 1000000 )) $(( (t1 - t0) % 1000000 )) > "$folder/seconds"
 }
 
-# run_side LABEL BINARY SIDE_DIR CACHED: runs every case; with CACHED=1 a case whose folder holds
-# the same key (binary, mesh, arguments, timeout) is not run again
-run_side() {
-  local label="$1" bin="$2" side="$3" cached="$4" bin_sha n=0 reused=0 t0
+# the SHA-1 of every input (in the keys of the cached REF runs)
+declare -A mesh_sha
+while IFS=$'\t' read -r _ _ _ _ _ input _; do
+  if [ "$input" != - ] && [ -z "${mesh_sha[$input]+x}" ]; then mesh_sha[$input]=$(file_sha "$input"); fi
+done < "$cases"
+
+# run_worker BINARY SIDE_DIR CACHED W: runs the cases W, W + jobs, W + 2 jobs... of the list and
+# writes how many it ran and reused into SIDE_DIR/worker-W; with CACHED=1 a case whose folder
+# holds the same key (binary, mesh, arguments, timeout) is not run again
+run_worker() {
+  local bin="$1" side="$2" cached="$3" w="$4" bin_sha i=0 n=0 reused=0
+  local id tier mesh options args input obj refd headd folder key stored sha argv rest
   bin_sha=$(file_sha "$bin")
-  t0=$(date +%s)
-  local id tier mesh options args input obj refd headd folder key
   while IFS=$'\t' read -r id tier mesh options args input obj refd headd; do
+    i=$(( i + 1 ))
+    [ $(( (i - 1) % jobs )) -eq "$w" ] || continue
     folder="$side/runs/$id"
-    local sha="-"
-    if [ "$input" != - ]; then
-      if [ -z "${mesh_sha[$input]+x}" ]; then mesh_sha[$input]=$(file_sha "$input"); fi
-      sha="${mesh_sha[$input]}"
-    fi
+    sha="-"
+    if [ "$input" != - ]; then sha="${mesh_sha[$input]}"; fi
     key="$bin_sha $sha $run_timeout $args"
-    if [ "$cached" = 1 ] && [ -f "$folder/key" ] && [ "$(cat "$folder/key")" = "$key" ]; then
+    stored=""
+    if [ "$cached" = 1 ] && [ -f "$folder/key" ]; then read -r stored < "$folder/key" || true; fi
+    if [ "$stored" = "$key" ]; then
       reused=$(( reused + 1 ))
       continue
     fi
-    local argv=() rest=()
+    argv=()
     if [ "$input" != - ]; then argv=("$input"); fi
     read -r -a rest <<< "$args"
     run_in "$folder" "$bin" "${argv[@]}" "${rest[@]}"
     echo "$key" > "$folder/key"
     n=$(( n + 1 ))
   done < "$cases"
-  echo "$label: $n runs, $reused reused from the cache, $(( $(date +%s) - t0 )) s" >> "$out/timing.txt"
-  say "$label: $n runs, $reused reused from the cache ($(( $(date +%s) - t0 )) s)"
+  echo "$n $reused" > "$side/worker-$w"
+}
+
+# run_side LABEL BINARY SIDE_DIR CACHED: every case, by --jobs workers
+run_side() {
+  local label="$1" bin="$2" side="$3" cached="$4" t0 w pids=() n=0 reused=0 a b
+  t0=$(date +%s)
+  for (( w = 0; w < jobs; ++w )); do
+    rm -f "$side/worker-$w"
+    run_worker "$bin" "$side" "$cached" "$w" &
+    pids+=($!)
+  done
+  for w in "${!pids[@]}"; do
+    wait "${pids[$w]}" || die "$label: worker $w failed"
+    read -r a b < "$side/worker-$w"
+    n=$(( n + a ))
+    reused=$(( reused + b ))
+  done
+  echo "$label: $n runs, $reused reused from the cache, $(( $(date +%s) - t0 )) s ($jobs at a time)" >> "$out/timing.txt"
+  say "$label: $n runs, $reused reused from the cache ($(( $(date +%s) - t0 )) s, $jobs at a time)"
 }
 
 : > "$out/timing.txt"
 ncases=$(wc -l < "$cases")
 say "$ncases cases: ${#meshes[@]} meshes x ${#option_names[@]} option sets, and 2 special runs"
 run_side REF "$ref_bin" "$ref_dir" 1
-rm -rf "$head_dir/runs"
-run_side HEAD "$head_bin" "$head_dir" 0
+run_side HEAD "$head_bin" "$head_dir" 0  # every case folder is emptied before its run
 
 # -- comparison --------------------------------------------------------------------------------
 {
