@@ -55,6 +55,10 @@
 # defaults of the options.
 # Exit status: 0 when every difference is <= the tolerance and no exit status or message class
 # changed; 1 otherwise; 2 when the script itself fails (usage, a build).
+# Time (2026-11-26, 2 cores shared with other builds, load average 5 to 6): 12 min from an
+# empty cache (each build 2 to 2.5 min, 1094 runs 3 to 4 min per side), 3 min when REF is
+# cached and HEAD's build up to date. The comparison takes seconds when the OBJs are
+# byte-identical, 1 to 3 min when every one must be parsed.
 set -euo pipefail
 
 usage() {
