@@ -28,8 +28,9 @@ The geometry is built once and only read: a policy may read it from a second thr
 distance policy's `prepare()` runs concurrently with the center locator under
 `CGAL::Parallel_tag`). The solves are not thread-safe, except `shared_object()`.
 
-\cgalHasModel the type the package's parameterizers pass to the policies (an implementation
-class of the package, `internal::Disk`)
+\cgalHasModel the type the package's parameterizers pass to the policies, one per call (an
+implementation class of the package, `internal::Disk<TriangleMesh, SolverTraits>`, not part of
+the API: a policy names it only through its template parameter `Disk`)
 
 \sa `MeasuredCenterLocator`
 \sa `MeasuredBorderDistance`
@@ -39,12 +40,15 @@ class MeasuredDisk
 public:
   /// \name Types
   /// @{
+
   /// the mesh's vertex type
   typedef unspecified_type vertex_descriptor;
+
   /// @}
 
   /// \name The checked disk (read only)
   /// @{
+
   /// number of vertices, virtual ones included
   std::size_t number_of_vertices() const;
   /// number of real vertices (the mesh's): local indices `0 .. number_of_real_vertices() - 1`
@@ -83,10 +87,12 @@ public:
   int index(vertex_descriptor v) const;
   /// whether `v` is a vertex of the disk (any descriptor value accepted)
   bool contains(vertex_descriptor v) const;
+
   /// @}
 
   /// \name The shared systems
   /// @{
+
   /// solves \f$ L_{II} x = b \f$, \f$ L_{II} \f$ the cotangent Laplacian with the border loop
   /// eliminated, factorized once per call for every step (one entry per interior vertex, in
   /// `interior_vertices()` order). A policy that needs this matrix must use it through the
@@ -105,5 +111,6 @@ public:
   /// the first request (thread-safe), for center-independent work that the center locator
   /// and the border distance share (a geodesic solver's precomputation)
   template <class T> T& shared_object();
+
   /// @}
 };
