@@ -62,9 +62,24 @@ std::atomic<long> cpp_threads{0};  // those of std::thread / std::async
 
 typedef int (*Pthread_create)(pthread_t*, const pthread_attr_t*, void* (*)(void*), void*);
 
+} // namespace
+
+// A sanitizer runtime linked statically (Clang's -fsanitize=address or thread) defines
+// pthread_create as a weak alias of its interceptor, which this definition replaces: the
+// interceptor is then called by its own name, so that the sanitizer still sees every thread.
+extern "C" int __interceptor_pthread_create(pthread_t*, const pthread_attr_t*, void* (*)(void*), void*)
+  __attribute__((weak));
+
+namespace {
+
+// the pthread_create this one forwards to: the sanitizer's interceptor, or the next
+// definition after this executable (the C library's, or a shared sanitizer runtime's)
 Pthread_create real_pthread_create()
 {
-  static const Pthread_create real = reinterpret_cast<Pthread_create>(dlsym(RTLD_NEXT, "pthread_create"));
+  static const Pthread_create real =
+    (__interceptor_pthread_create != nullptr)
+      ? &__interceptor_pthread_create
+      : reinterpret_cast<Pthread_create>(dlsym(RTLD_NEXT, "pthread_create"));
   return real;
 }
 
