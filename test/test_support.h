@@ -20,12 +20,14 @@
 #define MBP_TEST_SUPPORT_H
 
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/number_type_config.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 
 #include <boost/test/unit_test.hpp>
 
@@ -334,6 +336,61 @@ void soup_to_mesh(const Soup& soup, Mesh& mesh)
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.faces, mesh);
   BOOST_REQUIRE(CGAL::is_valid_polygon_mesh(mesh));
 }
+
+
+// ---------------------------------------------------------------- the reports (issue 21)
+// Helpers of the suites that read the reports of the package's parameterizers
+// (test_measured_border, test_conformal, test_conformal_border, test_real_meshes).
+
+// The vertices of the border loop of `bhd`, from source(bhd) on: vertex k is the source of
+// the k-th halfedge of the loop (the order of the reports' per-border-vertex fields).
+template <class Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>
+border_loop_vertices(const Mesh& m, typename boost::graph_traits<Mesh>::halfedge_descriptor bhd)
+{
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> loop;
+  for(auto h : CGAL::halfedges_around_face(bhd, m))
+    loop.push_back(source(h, m));
+  return loop;
+}
+
+// The vertex at `position` in the range vertices(m) (how a report names a vertex, e.g. its
+// center).
+template <class Mesh>
+typename boost::graph_traits<Mesh>::vertex_descriptor vertex_at_position(const Mesh& m, std::size_t position)
+{
+  BOOST_REQUIRE_LT(position, static_cast<std::size_t>(num_vertices(m)));
+  auto it = vertices(m).begin();
+  for(std::size_t k = 0; k < position; ++k)
+    ++it;
+  return *it;
+}
+
+// A border parameterizer of the package (Border_parameterizer_3: Measured_border_ or
+// Conformal_border_parameterizer_3) that writes the report of each of its calls into
+// `*report`: CGAL's fixed border parameterizers call the copy they hold without a report,
+// so this is how a test reads the report of the border step run inside CGAL's DCP (copies
+// share the pointer, which the test owns; the package's parameterizers share nothing).
+template <class Border>
+class Reporting_border : public Border
+{
+public:
+  explicit Reporting_border(CGAL::Surface_mesh_parameterization::Parameterization_report* report = nullptr,
+                            const Border& border = Border())
+    : Border(border), m_report(report)
+  { }
+
+  template <class VertexUVmap, class VertexIndexMap, class VertexParameterizedMap>
+  CGAL::Surface_mesh_parameterization::Error_code
+  parameterize(const typename Border::Triangle_mesh& mesh, typename Border::halfedge_descriptor bhd,
+               VertexUVmap uvmap, VertexIndexMap vimap, VertexParameterizedMap vpmap)
+  {
+    return Border::parameterize(mesh, bhd, uvmap, vimap, vpmap, m_report);
+  }
+
+private:
+  CGAL::Surface_mesh_parameterization::Parameterization_report* m_report;
+};
 
 } // namespace mbp_test
 

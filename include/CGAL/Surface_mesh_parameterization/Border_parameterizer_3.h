@@ -104,7 +104,17 @@ public:
   ///         indexes the component itself).
   /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` with
   ///         `vertex_descriptor` as key and `bool` as value.
-  /// \param report when not null, receives the report of the call.
+  /// \param mesh the mesh; the component of `bhd` must be a topological disk, possibly with
+  ///        holes (filled virtually).
+  /// \param bhd a border halfedge: its loop is laid out.
+  /// \param uvmap receives the UV of every vertex of the loop of `bhd`.
+  /// \param vpmap receives `true` for every vertex of the loop of `bhd`.
+  /// \param report when not null, receives the report of the call (the border step's
+  ///        fields: center, distances and polar placement, or the conformal border's
+  ///        quantities; `border_uv`, `border_convex`). CGAL's fixed border parameterizers
+  ///        call this function without it: to read the report of that call, derive from this
+  ///        class and forward a report pointer of yours (see the user manual, section *The
+  ///        measured border inside CGAL's parameterizers*).
   /// \return `OK` or the first failure: the input checks (see
   ///         `Conformal_parameterizer_3::parameterize()`), the policies' codes,
   ///         `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`, `ERROR_DEGENERATE_BORDER_MAP`.

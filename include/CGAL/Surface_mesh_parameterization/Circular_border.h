@@ -32,18 +32,9 @@ class Circular_border
 {
 public:
   /// \cond SKIP_IN_MANUAL
-  static constexpr Border_family member = CIRCLE;
+  static constexpr Border_family member = CIRCLE;  // the circle is always a member: nothing to build
   static constexpr bool searches = false;
-
-  template <class Step>
-  Error_code build(Step&) const { return OK; }
-
-  template <class Step, class Evaluator>
-  Error_code choose(Step& step, Evaluator& evaluator) const
-  {
-    internal::evaluate_member(evaluator, CIRCLE, step.report, step.repairable);
-    return OK;
-  }
+  template <class Step> Error_code build(Step&) const { return OK; }
   /// \endcond
 };
 

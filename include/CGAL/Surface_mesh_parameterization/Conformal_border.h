@@ -77,13 +77,6 @@ public:
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return status;
   }
-
-  template <class Step, class Evaluator>
-  Error_code choose(Step& step, Evaluator& evaluator) const
-  {
-    internal::evaluate_member(evaluator, CONFORMAL, step.report, step.repairable);
-    return OK;
-  }
   /// \endcond
 };
 

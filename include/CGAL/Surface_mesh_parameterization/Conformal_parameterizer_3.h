@@ -51,7 +51,9 @@ enum Repair
   /// conformal map (each blend costs two back-substitutions with the same factorization) and
   /// the mean value coordinates map (positive weights; one sparse LU factorization, then two
   /// back-substitutions per blend). For each, the smallest valid blend \f$ t \f$ is found by
-  /// five bisection steps on \f$ (0, 1] \f$ (the mean value map also tries \f$ t = 0 \f$); the
+  /// five bisection steps between the member's own border and its convex border, \f$ 1 \f$
+  /// (the mean value map also tries the member's own border; after `Automatic_border`, whose
+  /// search already tried the discrete conformal blends, only the mean value map is left); the
   /// valid candidate of lowest angle distortion is kept. At \f$ t = 1 \f$ the border is
   /// convex, so the mean value map is valid (Floater's theorem): the repair always succeeds,
   /// up to rounding. The default.
@@ -144,7 +146,13 @@ public:
   ///         indexed by the parameterizer).
   /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` with
   ///         `vertex_descriptor` as key and `bool` as value.
-  /// \param report when not null, receives the report of the call.
+  /// \param mesh the mesh; the component of `bhd` must be a topological disk, possibly with
+  ///        holes (filled virtually for the solves).
+  /// \param bhd a border halfedge: its loop is the border laid out by the policy.
+  /// \param uvmap receives the UV of every vertex of the component.
+  /// \param vpmap receives `true` for every vertex of the component.
+  /// \param report when not null, receives the report of the call (also after a failure:
+  ///        its `status` and the fields of the steps that ran).
   /// \return `OK`, or the first failure: the input checks (`ERROR_EMPTY_MESH`,
   ///         `ERROR_INVALID_BORDER_HALFEDGE`, `ERROR_NON_TRIANGULAR_MESH`,
   ///         `ERROR_BORDER_TOO_SHORT`, `ERROR_NO_TOPOLOGICAL_DISC`,
@@ -205,7 +213,7 @@ private:
   {
     Parameterization_report& r = step.report;
     internal::Border_evaluator<Disk> evaluator(step.disk, step.members);
-    Error_code status = m_border.choose(step, evaluator);
+    Error_code status = internal::choose_border(m_border, step, evaluator);
     const double measured = r.center_seconds + r.distance_seconds + r.border_map_seconds;
     r.interior_seconds = clock.lap() - (Border_policy::searches ? measured : 0.);
     if(status != OK)
@@ -281,13 +289,11 @@ Error_code parameterize(TriangleMesh& mesh,
 /// The paper's measured boundary parameterization (MBPPP with the default policies):
 /// `Conformal_parameterizer_3` with the border policy `Measured_border<CenterLocator,
 /// BorderDistance>`.
-template <class TriangleMesh,
-          class CenterLocator = Poisson_center_locator,
-          class BorderDistance = Poisson_border_distance,
-          class SolverTraits = Default,
+template <class TriangleMesh, class CenterLocator = Poisson_center_locator,
+          class BorderDistance = Poisson_border_distance, class SolverTraits = Default,
           class ConcurrencyTag = CGAL::Sequential_tag>
-using Measured_conformal_parameterizer_3 =
-  Conformal_parameterizer_3<TriangleMesh, Measured_border<CenterLocator, BorderDistance>, SolverTraits, ConcurrencyTag>;
+using Measured_conformal_parameterizer_3 = Conformal_parameterizer_3<TriangleMesh,
+  Measured_border<CenterLocator, BorderDistance>, SolverTraits, ConcurrencyTag>;
 
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

@@ -59,13 +59,7 @@ public:
       return ERROR_NO_INTERIOR_VERTEX;
     std::vector<double> values;
     const Error_code status = internal::geodesic_distances<Method>(disk, disk.border(), values);
-    if(status != OK)
-      return status;
-    const int c = internal::argmax_with_tie_break(disk, values);
-    if(c < 0)
-      return ERROR_NO_INTERIOR_VERTEX;  // the distances are finite: the solver checked them
-    center = static_cast<std::size_t>(c);
-    return OK;
+    return internal::center_at_maximum(disk, status, values, center);
   }
 };
 

@@ -82,13 +82,6 @@ public:
       step.members.add_measured(measured.polar.angles, measured.distances);
     return status;
   }
-
-  template <class Step, class Evaluator>
-  Error_code choose(Step& step, Evaluator& evaluator) const
-  {
-    internal::evaluate_member(evaluator, MEASURED, step.report, step.repairable);
-    return OK;
-  }
   /// \endcond
 
 private:

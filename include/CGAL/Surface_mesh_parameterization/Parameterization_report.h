@@ -28,14 +28,10 @@ namespace Surface_mesh_parameterization {
 /// (one per right-hand side), with their wall-clock times.
 struct Solver_statistics
 {
-  /// sparse factorizations
-  int factorizations = 0;
-  /// back-substitutions, one per right-hand side
-  int back_substitutions = 0;
-  /// time of the factorizations (seconds)
-  double factorization_seconds = 0.;
-  /// time of the back-substitutions (seconds)
-  double back_substitution_seconds = 0.;
+  int factorizations = 0;               ///< sparse factorizations
+  int back_substitutions = 0;           ///< back-substitutions, one per right-hand side
+  double factorization_seconds = 0.;    ///< time of the factorizations (seconds)
+  double back_substitution_seconds = 0.;  ///< time of the back-substitutions (seconds)
 
   /// adds the counters of `other`.
   void add(const Solver_statistics& other)
@@ -90,8 +86,7 @@ struct Border_candidate
 /// the loop's size). Vertices are named by their position in the range `vertices(mesh)`.
 struct Parameterization_report
 {
-  /// status of the call
-  Error_code status = ERROR_WRONG_PARAMETER;
+  Error_code status = ERROR_WRONG_PARAMETER;  ///< status of the call
   ///@{
   /// number of vertices and faces of the parameterized component
   std::size_t vertices = 0, faces = 0;
@@ -105,53 +100,42 @@ struct Parameterization_report
   /// parameterizer, the factorization of \f$ L_{II} \f$ and the distance policy's
   /// preparation)
   double center_seconds = 0.;
-  /// the measured border's step 2: the distances from the center to the border
-  double distance_seconds = 0.;
-  /// the measured border's step 3: the polar border map
-  double border_map_seconds = 0.;
-  /// the conformal border's turning angles and polygon
-  double conformal_border_seconds = 0.;
+  double distance_seconds = 0.;  ///< the measured border's step 2: the distances from the center to the border
+  double border_map_seconds = 0.;  ///< the measured border's step 3: the polar border map
+  double conformal_border_seconds = 0.;  ///< the conformal border's turning angles and polygon
   /// the interior solves, validity checks and angle distortions of the candidates before
   /// any repair (for the automatic border, the whole search)
   double interior_seconds = 0.;
-  /// the repair
-  double repair_seconds = 0.;
-  /// writing the UVs into the property maps
-  double output_seconds = 0.;
-  /// the whole call
-  double total_seconds = 0.;
+  double repair_seconds = 0.;  ///< the repair
+  double output_seconds = 0.;  ///< writing the UVs into the property maps
+  double total_seconds = 0.;  ///< the whole call
   /// @}
 
-  /// factorizations and back-substitutions of the call, with their times
-  Solver_statistics statistics;
+  Solver_statistics statistics;  ///< factorizations and back-substitutions of the call, with their times
 
   /// \name The border polygon
   /// @{
   /// the UV of each border vertex, as written in the map (empty after a failure)
   std::vector<std::array<double, 2> > border_uv;
-  /// whether the border polygon was verified strictly convex
-  bool border_convex = false;
+  bool border_convex = false;  ///< whether the border polygon was verified strictly convex
   /// @}
 
   /// \name The measured border (when a center was located)
   /// @{
   /// whether a center was located (also when a later step failed)
   bool has_center = false;
-  /// the center vertex, by its position in `vertices(mesh)`
-  std::size_t center = 0;
+  std::size_t center = 0;  ///< the center vertex, by its position in `vertices(mesh)`
   /// distance from the center to each border vertex (0 for a vertex that the distance
   /// policy could not reach, after `ERROR_DISTANCE_COMPUTATION_FAILED`)
   std::vector<double> border_distances;
-  /// border vertices the distance policy could not reach
-  std::size_t unreachable_border_vertices = 0;
+  std::size_t unreachable_border_vertices = 0;  ///< border vertices the distance policy could not reach
   /// polar angle \f$ \varphi_k \in [0, 2\pi) \f$ of each border vertex (the UV angle is
   /// \f$ -\varphi_k \f$)
   std::vector<double> border_angles;
   /// UV position of the polar origin: border vertex `k` is at
   /// `polar_origin + polar_scale * border_distances[k] * (cos(-phi_k), sin(-phi_k))`
   std::array<double, 2> polar_origin = {{0.5, 0.5}};
-  /// UV length per unit of distance (in the mesh's unit of length)
-  double polar_scale = 1.;
+  double polar_scale = 1.;  ///< UV length per unit of distance (in the mesh's unit of length)
   /// @}
 
   /// \name The conformal border (when it was computed)
@@ -161,12 +145,9 @@ struct Parameterization_report
   /// the length of each border edge in the closed polygon, before its uniform scaling into
   /// \f$ [0,1]^2 \f$
   std::vector<double> closed_lengths;
-  /// geodesic curvature \f$ \kappa_k = \pi - s_k \f$ of each border vertex
-  std::vector<double> geodesic_curvatures;
-  /// the correction \f$ h_k = (L_{BI} u_I)_k \f$
-  std::vector<double> corrections;
-  /// the target turning angle \f$ \tilde\kappa_k = \kappa_k - h_k \f$ (sum \f$ 2\pi \f$)
-  std::vector<double> turning_angles;
+  std::vector<double> geodesic_curvatures;  ///< geodesic curvature \f$ \kappa_k = \pi - s_k \f$ of each border vertex
+  std::vector<double> corrections;  ///< the correction \f$ h_k = (L_{BI} u_I)_k \f$
+  std::vector<double> turning_angles;  ///< the target turning angle \f$ \tilde\kappa_k = \kappa_k - h_k \f$ (sum \f$ 2\pi \f$)
   /// the smallest blend toward the circle's turning angles at which the conformal polygon
   /// is simple (0 when the conformal border itself is simple)
   double conformal_blend = 0.;
@@ -180,21 +161,15 @@ struct Parameterization_report
   /// faces flipped by the chosen border's layout before repair (for the automatic border:
   /// the fewest over the members' own borders)
   std::size_t flipped_faces_before_repair = 0;
-  /// whether the result was repaired
-  bool repaired = false;
-  /// the member of the result
-  Border_family kept_border = CIRCLE;
-  /// the blend of the result toward its member's convex border (0: the member itself)
-  double blend = 0.;
+  bool repaired = false;  ///< whether the result was repaired
+  Border_family kept_border = CIRCLE;  ///< the member of the result
+  double blend = 0.;  ///< the blend of the result toward its member's convex border (0: the member itself)
   /// whether the interior of the result is the mean value coordinates map (rather than the
   /// discrete conformal map)
   bool mean_value_interior = false;
-  /// layouts tried by the repair
-  int repair_candidates = 0;
-  /// every layout tried, in the order tried (the repair's included)
-  std::vector<Border_candidate> border_candidates;
-  /// the index of the kept layout in `border_candidates` (-1 after a failure)
-  int chosen_candidate = -1;
+  int repair_candidates = 0;  ///< layouts tried by the repair
+  std::vector<Border_candidate> border_candidates;  ///< every layout tried, in the order tried (the repair's included)
+  int chosen_candidate = -1;  ///< the index of the kept layout in `border_candidates` (-1 after a failure)
   /// @}
 };
 

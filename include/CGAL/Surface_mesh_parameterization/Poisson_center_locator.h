@@ -54,13 +54,7 @@ public:
   {
     std::vector<double> values;
     const Error_code status = internal::boundary_poisson_distance(disk, values);
-    if(status != OK)
-      return status;
-    const int c = internal::argmax_with_tie_break(disk, values);
-    if(c < 0)
-      return ERROR_NO_INTERIOR_VERTEX;  // the values are finite: the solves checked them
-    center = static_cast<std::size_t>(c);
-    return OK;
+    return internal::center_at_maximum(disk, status, values, center);
   }
 };
 

@@ -70,6 +70,19 @@ void evaluate_member(Evaluator& evaluator, Border_family member, Parameterizatio
   repairable.push_back(member);
 }
 
+// The candidates of a border policy: its own search, or the layout of its one member.
+template <class Policy, class Step, class Evaluator>
+Error_code choose_border(const Policy& policy, Step& step, Evaluator& evaluator)
+{
+  if constexpr(Policy::searches)
+    return policy.choose(step, evaluator);
+  else
+  {
+    evaluate_member(evaluator, Policy::member, step.report, step.repairable);
+    return OK;
+  }
+}
+
 // The automatic border's search:
 // 1. the circle and the conformal border (at its own blend), in one batch;
 // 2. only when the conformal layout is not one-to-one: the measured member

@@ -87,7 +87,7 @@ public:
     const std::vector<double>& g = m_disk.mean_spoke_lengths();
     std::vector<double> f(d.size());
     for(std::size_t i = 0; i < f.size(); ++i)
-      f[i] = d[i] * g[i];
+      f[i] = d[i] * g[i];  // the right-hand side of the paper's Eq. 1
     return m_spring->solve_with_zero_at(source, f, values);
   }
 

@@ -50,14 +50,25 @@ public:
   template <class VertexPointMap>
   int add(vertex_descriptor v, VertexPointMap vpm)
   {
+    const std::size_t seen = m_vertices.size();
+    const int id = add(v);
+    if(m_vertices.size() > seen)  // first sight
+    {
+      const auto& p = get(vpm, v);
+      m_points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    }
+    return id;
+  }
+
+  // the local index of `v`, given on first sight (no position recorded)
+  int add(vertex_descriptor v)
+  {
     int id = index(v);
     if(id >= 0)
       return id;
     id = static_cast<int>(m_vertices.size());
     put(m_index_map, v, id + 1);
     m_vertices.push_back(v);
-    const auto& p = get(vpm, v);
-    m_points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
     return id;
   }
 

@@ -12,6 +12,8 @@
 
 // The deterministic argmax shared by the center locators (user manual: The method in a page).
 
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -105,6 +107,22 @@ int argmax_with_tie_break(const Patch& patch, const std::vector<double>& values)
   for(std::size_t k = 1; k < by_distance.size() && by_distance[k].first - by_distance[0].first <= equal; ++k)
     smallest = (std::min)(smallest, by_distance[k].second);
   return smallest;
+}
+
+// The center at the maximum of a distance map that was computed with `status`: OK, or the
+// status when it failed, or ERROR_NO_INTERIOR_VERTEX when there is no candidate (the
+// values are finite: the solvers check them).
+template <class Disk>
+Error_code center_at_maximum(const Disk& disk, Error_code status, const std::vector<double>& values,
+                             std::size_t& center)
+{
+  if(status != OK)
+    return status;
+  const int c = argmax_with_tie_break(disk, values);
+  if(c < 0)
+    return ERROR_NO_INTERIOR_VERTEX;
+  center = static_cast<std::size_t>(c);
+  return OK;
 }
 
 } // namespace internal

@@ -131,22 +131,18 @@ public:
     distances.assign(n, infinity());
     std::vector<unsigned char> accepted(n, 0);
     Statistics stats;
-
-    typedef std::pair<double, int> Entry;  // (tentative value, vertex)
-    std::vector<Entry> heap;
+    Heap heap;
     heap.reserve(n + sources.size());
-    const std::greater<Entry> later;  // min-heap
     for(int s : sources)
       if(s >= 0 && static_cast<std::size_t>(s) < n && distances[static_cast<std::size_t>(s)] != 0.)
       {
         distances[static_cast<std::size_t>(s)] = 0.;
         heap.emplace_back(0., s);
       }
-    std::make_heap(heap.begin(), heap.end(), later);
-
+    std::make_heap(heap.begin(), heap.end(), std::greater<Entry>());
     while(!heap.empty())
     {
-      std::pop_heap(heap.begin(), heap.end(), later);
+      std::pop_heap(heap.begin(), heap.end(), std::greater<Entry>());
       const Entry top = heap.back();
       heap.pop_back();
       const std::size_t v = static_cast<std::size_t>(top.second);
@@ -154,48 +150,47 @@ public:
         continue;
       accepted[v] = 1;
       ++stats.accepted;
-
-      for(const Triangle_adjacency::Corner* c = m_adjacency.corners_begin(v);
-          c != m_adjacency.corners_end(v); ++c)
-      {
-        const Face& t = m_faces[static_cast<std::size_t>(c->face)];
-        for(int j = 1; j <= 2; ++j)
-        {
-          const int kc = (c->k + j) % 3;
-          const std::size_t vc = static_cast<std::size_t>(t[static_cast<std::size_t>(kc)]);
-          if(accepted[vc])
-            continue;
-          const double value = update(static_cast<std::size_t>(c->face), kc, distances, accepted, stats);
-          if(value < distances[vc])  // false for NaN
-          {
-            distances[vc] = value;
-            heap.emplace_back(value, static_cast<int>(vc));
-            std::push_heap(heap.begin(), heap.end(), later);
-          }
-        }
-      }
-      // the obtuse corners split by v: v is not in their face, but their value may now improve
-      for(std::size_t i = m_split_offsets[v]; i < m_split_offsets[v + 1]; ++i)
-      {
-        const Split& split = m_splits[m_splits_by_vertex[i]];
-        const std::size_t vc = static_cast<std::size_t>(
-          m_faces[static_cast<std::size_t>(split.face)][static_cast<std::size_t>(split.corner)]);
-        if(accepted[vc])
-          continue;
-        const double value = update(static_cast<std::size_t>(split.face), split.corner, distances, accepted, stats);
-        if(value < distances[vc])
-        {
-          distances[vc] = value;
-          heap.emplace_back(value, static_cast<int>(vc));
-          std::push_heap(heap.begin(), heap.end(), later);
-        }
-      }
+      accept_neighbors(v, distances, accepted, heap, stats);
     }
     if(statistics != nullptr)
       *statistics = stats;
   }
 
 private:
+  typedef std::pair<double, int> Entry;  // (tentative value, vertex)
+  typedef std::vector<Entry> Heap;       // a min-heap (std::greater)
+
+  // The vertices whose value may improve now that v is accepted: the other corners of its
+  // faces, and the obtuse corners split by v (v is not in their face).
+  void accept_neighbors(std::size_t v, std::vector<double>& distances, std::vector<unsigned char>& accepted,
+                        Heap& heap, Statistics& stats) const
+  {
+    for(const Triangle_adjacency::Corner* c = m_adjacency.corners_begin(v); c != m_adjacency.corners_end(v); ++c)
+      for(int j = 1; j <= 2; ++j)
+        relax(static_cast<std::size_t>(c->face), (c->k + j) % 3, distances, accepted, heap, stats);
+    for(std::size_t i = m_split_offsets[v]; i < m_split_offsets[v + 1]; ++i)
+    {
+      const Split& split = m_splits[m_splits_by_vertex[i]];
+      relax(static_cast<std::size_t>(split.face), split.corner, distances, accepted, heap, stats);
+    }
+  }
+
+  // Updates corner k of face f unless its vertex is accepted; a smaller value is pushed.
+  void relax(std::size_t f, int k, std::vector<double>& distances, std::vector<unsigned char>& accepted, Heap& heap,
+             Statistics& stats) const
+  {
+    const std::size_t vc = static_cast<std::size_t>(m_faces[f][static_cast<std::size_t>(k)]);
+    if(accepted[vc])
+      return;
+    const double value = update(f, k, distances, accepted, stats);
+    if(value < distances[vc])  // false for NaN
+    {
+      distances[vc] = value;
+      heap.emplace_back(value, static_cast<int>(vc));
+      std::push_heap(heap.begin(), heap.end(), std::greater<Entry>());
+    }
+  }
+
   typedef Eigen::Vector2d Vector_2;
 
   // The split of an obtuse corner: the vertex found by the unfolding and its unfolded position,
@@ -357,6 +352,27 @@ private:
   // a vertex lies in the acute section of C: {x : x . ea >= 0 and x . eb >= 0}. The current
   // window is the edge (P, Q) of face g opposite its corner kg, with P on A's side; every ray
   // of the section crosses it. On success, `vd` is the vertex and `ed` its unfolded position.
+  // Places vertex d in the plane of the unfolding, on the side of the line (p, q) away from C
+  // (the origin), with its 3D distances to the vertices vp and vq placed at p and q.
+  bool place_across(int d, int vp, int vq, const Vector_2& p, const Vector_2& q, Vector_2& pos) const
+  {
+    const Eigen::Vector3d& pd3 = m_points[static_cast<std::size_t>(d)];
+    const double lp2 = (pd3 - m_points[static_cast<std::size_t>(vp)]).squaredNorm();
+    const double lq2 = (pd3 - m_points[static_cast<std::size_t>(vq)]).squaredNorm();
+    const Vector_2 pq = q - p;
+    const double e = pq.norm();
+    if(!(e > 0.))
+      return false;
+    const Vector_2 dir = pq / e;
+    Vector_2 normal(-dir.y(), dir.x());
+    if(normal.dot(p) < 0.)  // C (the origin) must be on the negative side
+      normal = -normal;
+    const double x = (lp2 - lq2 + e * e) / (2. * e);
+    const double h2 = lp2 - x * x;
+    pos = p + x * dir + (h2 > 0. ? std::sqrt(h2) : 0.) * normal;
+    return pos.allFinite();
+  }
+
   bool unfold(std::size_t f, int kc, const Vector_2& ea, const Vector_2& eb, int& vd, Vector_2& ed) const
   {
     const Face& t = m_faces[f];
@@ -380,22 +396,8 @@ private:
          th[static_cast<std::size_t>(kq)] != vq)  // wrapped around, or not a manifold strip
         return false;
 
-      // place D on the side of the line PQ away from C, with its 3D distances to P and Q
-      const Eigen::Vector3d& pd3 = m_points[static_cast<std::size_t>(d)];
-      const double lp2 = (pd3 - m_points[static_cast<std::size_t>(vp)]).squaredNorm();
-      const double lq2 = (pd3 - m_points[static_cast<std::size_t>(vq)]).squaredNorm();
-      const Vector_2 pq = q - p;
-      const double e = pq.norm();
-      if(!(e > 0.))
-        return false;
-      const Vector_2 dir = pq / e;
-      Vector_2 normal(-dir.y(), dir.x());
-      if(normal.dot(p) < 0.)  // C (the origin) must be on the negative side
-        normal = -normal;
-      const double x = (lp2 - lq2 + e * e) / (2. * e);
-      const double h2 = lp2 - x * x;
-      const Vector_2 pos = p + x * dir + (h2 > 0. ? std::sqrt(h2) : 0.) * normal;
-      if(!pos.allFinite())
+      Vector_2 pos;
+      if(!place_across(d, vp, vq, p, q, pos))
         return false;
 
       // in the acute section, right angles included up to rounding (cos >= -1e-12)

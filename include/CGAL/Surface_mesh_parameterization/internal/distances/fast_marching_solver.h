@@ -10,7 +10,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_FAST_MARCHING_SOLVER_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_FAST_MARCHING_SOLVER_H
 
-// The geodesic solver interface on a Parameterization_patch_3 (one class per method, the
+// The geodesic solver interface on a checked disk (one class per method, the
 // source-independent work done once in the constructor and shared on the patch), with the
 // fast marching solver. The other methods are in geodesic_solvers.h.
 

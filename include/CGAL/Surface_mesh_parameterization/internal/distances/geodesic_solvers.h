@@ -10,11 +10,11 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_GEODESIC_SOLVERS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_DISTANCES_GEODESIC_SOLVERS_H
 
-// One solver class per geodesic method, working on a Parameterization_patch_3. A solver does
+// One solver class per geodesic method, working on a checked disk. A solver does
 // its source-independent work once in its constructor (adjacency, a triangle mesh copy, the
 // heat method's factorizations) and then computes distances from any set of sources. The
 // patch shares one solver per method between the center locator and the border distance
-// (Parameterization_patch_3::shared_object()).
+// (the disk's shared_object()).
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>

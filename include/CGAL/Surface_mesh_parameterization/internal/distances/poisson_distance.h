@@ -24,28 +24,25 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
+// b_i = d_i g_i, the right-hand side of Eq. 1 at every vertex.
+inline std::vector<double> poisson_right_hand_side(const std::vector<double>& d, const std::vector<double>& g)
+{
+  std::vector<double> b(d.size());
+  for(std::size_t i = 0; i < b.size(); ++i)
+    b[i] = d[i] * g[i];
+  return b;
+}
+
 // Boundary Poisson distance map: cotangent weights, the main border loop constrained. Uses
 // (and, on first use, creates) the patch's factorization of L_II. `values` gets one entry per
 // patch vertex (0 on the border loop).
 template <class Disk>
-Error_code boundary_poisson_distance(Disk& patch, std::vector<double>& values)
+Error_code boundary_poisson_distance(Disk& disk, std::vector<double>& values)
 {
-  const std::vector<int>& interior = patch.interior_vertices();
-  const std::vector<double>& d = patch.cotangent_row_sums();
-  const std::vector<double>& g = patch.mean_spoke_lengths();
-  std::vector<double> rhs(interior.size()), x;
-  for(std::size_t r = 0; r < interior.size(); ++r)
-  {
-    const std::size_t i = static_cast<std::size_t>(interior[r]);
-    rhs[r] = d[i] * g[i];
-  }
-  const Error_code status = patch.solve_interior(rhs, x);
-  if(status != OK)
-    return status;
-  values.assign(patch.number_of_vertices(), 0.);
-  for(std::size_t r = 0; r < interior.size(); ++r)
-    values[static_cast<std::size_t>(interior[r])] = x[r];
-  return OK;
+  auto* system = disk.systems().interior();
+  if(system == nullptr)
+    return disk.systems().interior_status();
+  return system->solve_scattered(poisson_right_hand_side(disk.cotangent_row_sums(), disk.mean_spoke_lengths()), values);
 }
 
 // Poisson distance map from `sources` (local indices): spring weights |x_i - x_j|^(-r), every
@@ -63,14 +60,7 @@ Error_code spring_poisson_distance(Disk& disk, const std::vector<int>& sources, 
   Error_code status = engine->build(disk.pattern(), disk.faces_indices(), n, sources, weight);
   values.assign(n, 0.);
   if(status == OK && engine->number_of_free_vertices() > 0)
-  {
-    const std::vector<double>& d = engine->row_sums();
-    const std::vector<double>& g = disk.mean_spoke_lengths();
-    std::vector<double> f(n);
-    for(std::size_t i = 0; i < n; ++i)
-      f[i] = d[i] * g[i];
-    status = engine->solve_scattered(f, values);
-  }
+    status = engine->solve_scattered(poisson_right_hand_side(engine->row_sums(), disk.mean_spoke_lengths()), values);
   disk.systems().add_statistics(engine->statistics());
   return status;
 }

@@ -275,91 +275,93 @@ private:
     {
       const Triangle_adjacency& adj = m_tracer.m_adjacency;
       const std::size_t max_steps = 4 * adj.number_of_faces() + adj.number_of_vertices() + 8;
-
-      // current state: at a vertex, or on an edge (crossing from face `m_face` across the edge
-      // opposite its corner `m_corner`, at the last point of the polyline)
-      bool at_vertex = true;
-      int vertex = m_plane.source;
-      int arrival_face = -1, arrival_vertex = -1;
-      bool at_source = true;
-      Eigen::Vector3d heading = direction;
-
+      m_at_vertex = true;
+      m_vertex = m_plane.source;
+      m_arrival_face = m_arrival_vertex = -1;
+      m_at_source = true;
+      m_heading = direction;
       for(std::size_t step = 0; step < max_steps; ++step)
       {
-        if(at_vertex)
-        {
-          if(vertex == m_plane.target)
-            return REACHED_TARGET;
-          if(!m_visited_vertices.insert(vertex).second)
-            return CLOSED_LOOP;
-
-          collect_candidates(vertex, arrival_face, arrival_vertex);
-          int chosen = -1;
-          const Status status = at_source ? choose_start(vertex, heading, chosen)
-                                          : choose_continuation(vertex, heading, chosen);
-          if(status != REACHED_TARGET)
-            return status;
-          at_source = false;
-
-          const Candidate c = m_candidates[static_cast<std::size_t>(chosen)];
-          const Eigen::Vector3d from = m_tracer.point(vertex);
-          m_polyline.push_back(c.point);
-          update_heading(heading, c.point - from);
-          if(c.vertex >= 0)
-          {
-            arrival_vertex = vertex;
-            arrival_face = -1;
-            vertex = c.vertex;
-          }
-          else
-          {
-            at_vertex = false;
-            m_face = c.face;
-            m_corner = c.corner;
-          }
-          continue;
-        }
-
-        // on an edge: enter the face across it
-        const int g = adj.neighbor(static_cast<std::size_t>(m_face), m_corner);
-        if(g < 0)
-          return REACHED_BORDER;
-        const int kg = adj.neighbor_corner(static_cast<std::size_t>(m_face), m_corner);
-        const std::int64_t key = 3 * static_cast<std::int64_t>(g) + kg;
-        if(!m_visited_crossings.insert(key).second)
-          return CLOSED_LOOP;
-
-        const Face& f = adj.face(static_cast<std::size_t>(g));
-        const int c = f[static_cast<std::size_t>(kg)];
-        const int a = f[static_cast<std::size_t>((kg + 1) % 3)];
-        const int b = f[static_cast<std::size_t>((kg + 2) % 3)];
-        const int sa = sign(a), sb = sign(b), sc = sign(c);
-        if(sa == 0 || sb == 0 || sa == sb)  // the entry edge must be crossed (cannot happen)
-          return REACHED_BORDER;
-        const Eigen::Vector3d from = m_polyline.back();
-        if(sc == 0)
-        {
-          // the plane leaves the triangle through its vertex c
-          m_polyline.push_back(m_tracer.point(c));
-          update_heading(heading, m_tracer.point(c) - from);
-          at_vertex = true;
-          vertex = c;
-          arrival_face = g;
-          arrival_vertex = -1;
-          continue;
-        }
-        // leave through the edge whose endpoints have opposite signs: (b, c) or (c, a)
-        const int exit_corner = (sc == sa) ? (kg + 1) % 3 : (kg + 2) % 3;
-        const Eigen::Vector3d q = (sc == sa) ? crossing(b, c) : crossing(c, a);
-        m_polyline.push_back(q);
-        update_heading(heading, q - from);
-        m_face = g;
-        m_corner = exit_corner;
+        Status status = STEP_LIMIT;
+        if(!(m_at_vertex ? leave_vertex(status) : cross_face(status)))
+          return status;
       }
       return STEP_LIMIT;
     }
 
   private:
+    // At a vertex: the walk ends there (false, with its status), or goes on to the chosen
+    // crossing of the plane with the vertex's one-ring.
+    bool leave_vertex(Status& status)
+    {
+      if(m_vertex == m_plane.target)
+        return (status = REACHED_TARGET, false);
+      if(!m_visited_vertices.insert(m_vertex).second)
+        return (status = CLOSED_LOOP, false);
+      collect_candidates(m_vertex, m_arrival_face, m_arrival_vertex);
+      int chosen = -1;
+      status = m_at_source ? choose_start(m_vertex, m_heading, chosen) : choose_continuation(m_vertex, m_heading, chosen);
+      if(status != REACHED_TARGET)
+        return false;
+      m_at_source = false;
+      const Candidate c = m_candidates[static_cast<std::size_t>(chosen)];
+      const Eigen::Vector3d from = m_tracer.point(m_vertex);
+      m_polyline.push_back(c.point);
+      update_heading(m_heading, c.point - from);
+      if(c.vertex >= 0)
+      {
+        m_arrival_vertex = m_vertex;
+        m_arrival_face = -1;
+        m_vertex = c.vertex;
+      }
+      else
+      {
+        m_at_vertex = false;
+        m_face = c.face;
+        m_corner = c.corner;
+      }
+      return true;
+    }
+
+    // On an edge (crossing from face m_face across the edge opposite its corner m_corner, at
+    // the last point of the polyline): enters the face across it and leaves it through a vertex
+    // or an edge; false, with the status, when the walk ends.
+    bool cross_face(Status& status)
+    {
+      const Triangle_adjacency& adj = m_tracer.m_adjacency;
+      const int g = adj.neighbor(static_cast<std::size_t>(m_face), m_corner);
+      if(g < 0)
+        return (status = REACHED_BORDER, false);
+      const int kg = adj.neighbor_corner(static_cast<std::size_t>(m_face), m_corner);
+      if(!m_visited_crossings.insert(3 * static_cast<std::int64_t>(g) + kg).second)
+        return (status = CLOSED_LOOP, false);
+      const Face& f = adj.face(static_cast<std::size_t>(g));
+      const int c = f[static_cast<std::size_t>(kg)];
+      const int a = f[static_cast<std::size_t>((kg + 1) % 3)];
+      const int b = f[static_cast<std::size_t>((kg + 2) % 3)];
+      const int sa = sign(a), sb = sign(b), sc = sign(c);
+      if(sa == 0 || sb == 0 || sa == sb)  // the entry edge must be crossed (cannot happen)
+        return (status = REACHED_BORDER, false);
+      const Eigen::Vector3d from = m_polyline.back();
+      if(sc == 0)  // the plane leaves the triangle through its vertex c
+      {
+        m_polyline.push_back(m_tracer.point(c));
+        update_heading(m_heading, m_tracer.point(c) - from);
+        m_at_vertex = true;
+        m_vertex = c;
+        m_arrival_face = g;
+        m_arrival_vertex = -1;
+        return true;
+      }
+      // leave through the edge whose endpoints have opposite signs: (b, c) or (c, a)
+      const Eigen::Vector3d q = (sc == sa) ? crossing(b, c) : crossing(c, a);
+      m_polyline.push_back(q);
+      update_heading(m_heading, q - from);
+      m_face = g;
+      m_corner = (sc == sa) ? (kg + 1) % 3 : (kg + 2) % 3;
+      return true;
+    }
+
     // A crossing of the cutting plane with the one-ring of a vertex v: either a point on the
     // edge opposite corner `corner` of face `face` (`vertex` = -1), or a neighbour `vertex`
     // with d = 0, reached along an edge in the plane.
@@ -521,6 +523,9 @@ private:
     std::unordered_set<std::int64_t> m_visited_crossings;
     int m_face = -1;
     int m_corner = -1;
+    bool m_at_vertex = true, m_at_source = true;
+    int m_vertex = -1, m_arrival_face = -1, m_arrival_vertex = -1;
+    Eigen::Vector3d m_heading = Eigen::Vector3d::Zero();
   };
 
   const std::vector<Eigen::Vector3d>& m_points;

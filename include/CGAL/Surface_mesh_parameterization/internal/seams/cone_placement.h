@@ -23,20 +23,21 @@
 // of the mean-corrected problem (L u = Omega - A ΣOmega / ΣA, A the vertex areas) is most
 // extreme.
 //
-// One factorization serves every cone: L restricted to V \ D (or, on a closed surface, L
-// grounded at one vertex, the first cone's Dirichlet condition being a shift); adding a
-// cone c to D is the rank-one update u <- u - u(c)/G(c,c) G(.,c), where G is the Green
-// function of the current D, itself updated the same way (one back-substitution per cone).
+// One factorization of the package's Dirichlet engine serves every cone: L restricted to
+// V \ D (solve_scattered()), or, on a closed surface, L grounded at vertex 0, the first
+// cone's Dirichlet condition being a shift (solve_with_zero_at()). Adding a cone c to D is
+// the rank-one update u <- u - u(c)/G(c,c) G(.,c), where G is the Green function of the
+// current D, itself updated the same way (one back-substitution per cone).
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/seams/cut_graph.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/dirichlet_engine.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/laplacian.h>
-#include <CGAL/Surface_mesh_parameterization/internal/core/factorized_system.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
+#include <CGAL/Surface_mesh_parameterization/internal/seams/cut_graph.h>
 
 #include <CGAL/number_type_config.h>
 
 #include <Eigen/Core>
-#include <Eigen/Sparse>
 
 #include <algorithm>
 #include <array>
@@ -59,27 +60,22 @@ struct Curvature_data
 
 inline Error_code curvature_data(const Indexed_surface& s, Curvature_data& data)
 {
-  const std::size_t n = static_cast<std::size_t>(s.number_of_vertices());
   data.half_cotangents.resize(s.faces.size());
-  data.angle_defects.assign(n, 2. * CGAL_PI);
-  data.areas.assign(n, 0.);
+  data.angle_defects.assign(s.points.size(), 2. * CGAL_PI);
+  data.areas.assign(s.points.size(), 0.);
   for(std::size_t f = 0; f < s.faces.size(); ++f)
   {
-    const std::array<int, 3>& t = s.faces[f];
-    const Eigen::Vector3d& p0 = s.points[static_cast<std::size_t>(t[0])];
-    const Eigen::Vector3d& p1 = s.points[static_cast<std::size_t>(t[1])];
-    const Eigen::Vector3d& p2 = s.points[static_cast<std::size_t>(t[2])];
-    if(is_degenerate_triangle(p0, p1, p2))
+    const std::array<Eigen::Vector3d, 3> p = {{s.points[static_cast<std::size_t>(s.faces[f][0])],
+                                              s.points[static_cast<std::size_t>(s.faces[f][1])],
+                                              s.points[static_cast<std::size_t>(s.faces[f][2])]}};
+    if(is_degenerate_triangle(p[0], p[1], p[2]))
       return ERROR_DEGENERATE_FACE;
-    const double double_area = (p1 - p0).cross(p2 - p0).norm();
+    data.half_cotangents[f] = half_cotangents(p[0], p[1], p[2]);
+    const double double_area = (p[1] - p[0]).cross(p[2] - p[0]).norm();
     for(int k = 0; k < 3; ++k)
     {
-      const std::size_t v = static_cast<std::size_t>(t[static_cast<std::size_t>(k)]);
-      const Eigen::Vector3d& p = s.points[v];
-      const Eigen::Vector3d a = s.points[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])] - p;
-      const Eigen::Vector3d b = s.points[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 2) % 3)])] - p;
-      data.half_cotangents[f][static_cast<std::size_t>(k)] = 0.5 * a.dot(b) / double_area;
-      data.angle_defects[v] -= std::atan2(a.cross(b).norm(), a.dot(b));
+      const std::size_t v = static_cast<std::size_t>(s.faces[f][static_cast<std::size_t>(k)]);
+      data.angle_defects[v] -= corner_angle(p, k);
       data.areas[v] += double_area / 6.;
     }
   }
@@ -94,7 +90,7 @@ class Cone_placement
 public:
   Cone_placement(const Indexed_surface& s, const std::vector<char>& fixed) : m_surface(s), m_fixed(fixed) { }
 
-  const Solver_statistics& statistics() const { return m_system.statistics(); }
+  Solver_statistics statistics() const { return m_engine.statistics(); }
 
   Error_code place(int count, std::vector<int>& cones)
   {
@@ -103,61 +99,78 @@ public:
     Error_code status = curvature_data(m_surface, m_data);
     if(status != OK)
       return status;
-    const std::size_t n = m_data.angle_defects.size();
     m_closed = std::find(m_fixed.begin(), m_fixed.end(), char(1)) == m_fixed.end();
     m_fixed_now = m_fixed;
-    if((status = factor()) != OK)
+    if((status = build_engine()) != OK)
       return status;
-
+    if(m_closed && (status = place_first_cone(cones)) != OK)
+      return status;
     std::vector<double> u;
-    if(m_closed)
-    {
-      // the first cone: the extreme of the mean-corrected scale factor (zero weighted mean)
-      const double total_defect = std::accumulate(m_data.angle_defects.begin(), m_data.angle_defects.end(), 0.);
-      const double total_area = std::accumulate(m_data.areas.begin(), m_data.areas.end(), 0.);
-      std::vector<double> f(n);
-      for(std::size_t i = 0; i < n; ++i)
-        f[i] = m_data.angle_defects[i] - m_data.areas[i] * total_defect / total_area;
-      if((status = solve_grounded(f, u)) != OK)
-        return status;
-      double mean = 0.;
-      for(std::size_t i = 0; i < n; ++i)
-        mean += m_data.areas[i] * u[i] / total_area;
-      for(double& x : u)
-        x -= mean;
-      m_first = extreme_vertex(u);
-      cones.push_back(m_first);
-      m_fixed_now[static_cast<std::size_t>(m_first)] = 1;
-      --count;
-    }
     if((status = solve(m_data.angle_defects, u)) != OK)
       return status;
+    return place_by_updates(m_closed ? count - 1 : count, u, cones);
+  }
 
+private:
+  // The engine on L restricted to the unknowns: V \ D, or every vertex but one (the ground,
+  // vertex 0) on a closed surface.
+  Error_code build_engine()
+  {
+    std::vector<int> fixed;
+    for(std::size_t i = 0; i < m_fixed.size(); ++i)
+      if(m_closed ? i == 0 : m_fixed[i] != 0)
+        fixed.push_back(static_cast<int>(i));
+    const Laplacian_pattern pattern(m_fixed.size(), m_surface.faces);
+    const Error_code status = m_engine.build(pattern, m_surface.faces, m_fixed.size(), fixed,
+                                             Cotangent_weight{&m_data.half_cotangents});
+    if(status == OK && m_engine.number_of_free_vertices() == 0)
+      return ERROR_NO_INTERIOR_VERTEX;
+    return status;
+  }
+
+  // The first cone of a closed surface: the extreme of the mean-corrected scale factor (zero
+  // weighted mean), with the grounded system.
+  Error_code place_first_cone(std::vector<int>& cones)
+  {
+    const std::size_t n = m_data.angle_defects.size();
+    const double total_defect = std::accumulate(m_data.angle_defects.begin(), m_data.angle_defects.end(), 0.);
+    const double total_area = std::accumulate(m_data.areas.begin(), m_data.areas.end(), 0.);
+    std::vector<double> f(n), u;
+    for(std::size_t i = 0; i < n; ++i)
+      f[i] = m_data.angle_defects[i] - m_data.areas[i] * total_defect / total_area;
+    const Error_code status = m_engine.solve_scattered(f, u);
+    if(status != OK)
+      return status;
+    double mean = 0.;
+    for(std::size_t i = 0; i < n; ++i)
+      mean += m_data.areas[i] * u[i] / total_area;
+    for(double& x : u)
+      x -= mean;
+    m_first = extreme_vertex(u);
+    cones.push_back(m_first);
+    m_fixed_now[static_cast<std::size_t>(m_first)] = 1;
+    return OK;
+  }
+
+  // Adds up to `count` cones at the extremes of u, updating u after each one.
+  Error_code place_by_updates(int count, std::vector<double>& u, std::vector<int>& cones)
+  {
     std::vector<std::vector<double> > green;  // G(., c_j) of the set before cone j
     std::vector<int> added;
-    std::vector<double> e(n, 0.);
     for(; count > 0; --count)
     {
       const int c = extreme_vertex(u);
       if(c < 0 || !(std::abs(u[static_cast<std::size_t>(c)]) > 0.))
         break;
-      e[static_cast<std::size_t>(c)] = 1.;
       std::vector<double> g;
-      status = solve(e, g);
-      e[static_cast<std::size_t>(c)] = 0.;
+      const Error_code status = green_function(c, green, added, g);
       if(status != OK)
         return status;
-      for(std::size_t j = 0; j < green.size(); ++j)
-      {
-        const double ratio = green[j][static_cast<std::size_t>(c)] / green[j][static_cast<std::size_t>(added[j])];
-        for(std::size_t i = 0; i < n; ++i)
-          g[i] -= ratio * green[j][i];
-      }
       const double gcc = g[static_cast<std::size_t>(c)];
       if(!(gcc > 0.) || !std::isfinite(gcc))
         break;  // numerically already fixed
       const double ratio = u[static_cast<std::size_t>(c)] / gcc;
-      for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t i = 0; i < u.size(); ++i)
         u[i] -= ratio * g[i];
       u[static_cast<std::size_t>(c)] = 0.;
       cones.push_back(c);
@@ -165,66 +178,35 @@ public:
       green.push_back(std::move(g));
       added.push_back(c);
     }
-    m_scale_factors = std::move(u);
     return OK;
   }
 
-  // u after the last cone (0 on D and at the cones).
-  const std::vector<double>& scale_factors() const { return m_scale_factors; }
-
-private:
-  // L restricted to the unknowns: V \ D, or every vertex but one (the ground) on a closed
-  // surface.
-  Error_code factor()
+  // g = G(., c) for the set D0 and the cones `added` (whose Green functions are `green`):
+  // one back-substitution, then the rank-one updates of the cones in order.
+  Error_code green_function(int c, const std::vector<std::vector<double> >& green, const std::vector<int>& added,
+                            std::vector<double>& g)
   {
-    const std::size_t n = m_fixed.size();
-    m_row.assign(n, -1);
-    int next = 0;
-    for(std::size_t i = 0; i < n; ++i)
-      if(m_closed ? i != 0 : !m_fixed[i])
-        m_row[i] = next++;
-    if(next == 0)
-      return ERROR_NO_INTERIOR_VERTEX;
-    const Laplacian_pattern pattern(n, m_surface.faces);
-    Eigen::SparseMatrix<double> L;
-    pattern.assemble(m_surface.faces, m_row, next, Cotangent_weight{&m_data.half_cotangents}, L);
-    return m_system.factor(L);
-  }
-
-  // x with L x = f on the unknowns, 0 elsewhere.
-  Error_code solve_grounded(const std::vector<double>& f, std::vector<double>& x)
-  {
-    std::vector<double> b(static_cast<std::size_t>(m_system.size())), y;
-    for(std::size_t i = 0; i < f.size(); ++i)
-      if(m_row[i] >= 0)
-        b[static_cast<std::size_t>(m_row[i])] = f[i];
-    const Error_code status = m_system.solve(b, y);
+    std::vector<double> e(m_data.angle_defects.size(), 0.);
+    e[static_cast<std::size_t>(c)] = 1.;
+    const Error_code status = solve(e, g);
     if(status != OK)
       return status;
-    x.assign(f.size(), 0.);
-    for(std::size_t i = 0; i < f.size(); ++i)
-      if(m_row[i] >= 0)
-        x[i] = y[static_cast<std::size_t>(m_row[i])];
+    for(std::size_t j = 0; j < green.size(); ++j)
+    {
+      const double ratio = green[j][static_cast<std::size_t>(c)] / green[j][static_cast<std::size_t>(added[j])];
+      for(std::size_t i = 0; i < g.size(); ++i)
+        g[i] -= ratio * green[j][i];
+    }
     return OK;
   }
 
   // The solution of L x = f off D0, x = 0 on D0, where D0 is `fixed`, or, on a closed surface,
-  // the first cone: the cone takes the residual -sum(f) (then L x = f' has a solution, unique
-  // up to a constant), and the constant makes x vanish there.
+  // the first cone.
   Error_code solve(const std::vector<double>& f, std::vector<double>& x)
   {
     if(!m_closed)
-      return solve_grounded(f, x);
-    std::vector<double> g = f;
-    g[static_cast<std::size_t>(m_first)] -= std::accumulate(f.begin(), f.end(), 0.);
-    const Error_code status = solve_grounded(g, x);
-    if(status != OK)
-      return status;
-    const double shift = x[static_cast<std::size_t>(m_first)];
-    for(double& v : x)
-      v -= shift;
-    x[static_cast<std::size_t>(m_first)] = 0.;
-    return OK;
+      return m_engine.solve_scattered(f, x);
+    return m_engine.solve_with_zero_at(static_cast<std::size_t>(m_first), f, x);
   }
 
   // The vertex off D of largest |u|; ties (within 1e-9 relative) go to the smallest index.
@@ -246,11 +228,9 @@ private:
   const std::vector<char>& m_fixed;
   std::vector<char> m_fixed_now;
   Curvature_data m_data;
-  std::vector<int> m_row;
   bool m_closed = false;
   int m_first = -1;
-  Factorized_system<SolverTraits> m_system;
-  std::vector<double> m_scale_factors;
+  Dirichlet_engine<SolverTraits> m_engine;
 };
 
 } // namespace internal

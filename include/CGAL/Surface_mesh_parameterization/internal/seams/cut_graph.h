@@ -27,9 +27,9 @@
 //                            terminals)
 //   connect_terminals()      joins cones to the cut by shortest paths, nearest first (a
 //                            greedy Steiner tree)
-//   shorten_cut()            replaces each path of the cut between two branch points by the
-//                            shortest path between the same points on the same sides, when
-//                            shorter, and keeps it only if the cut is still a disk
+//   is_disk_cut()            whether the surface cut along the seams is a disk
+//
+// The shortening of a cut (shorten_cut()) is in cut_shortening.h.
 
 #include <Eigen/Core>
 
@@ -95,20 +95,17 @@ struct Path_source
   int edge;
 };
 
-// Runs Dijkstra from the sources. `usable(e)` says whether an edge may be walked, `relay(v)`
-// whether a settled vertex is expanded; `settle(v, d)` is called for every settled vertex
-// and returns true to stop. Ties are broken by vertex index (deterministic).
-template <class Usable, class Relay, class Settle>
-void shortest_paths(const Indexed_surface& s, const std::vector<Path_source>& sources,
-                    const Usable& usable, const Relay& relay, const Settle& settle,
-                    Shortest_path_tree& tree)
+// Vertices to settle, nearest first (ties: smallest index).
+typedef std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int> >,
+                            std::greater<std::pair<double, int> > > Path_queue;
+
+// The tree before the first step: every vertex unreached but the sources.
+inline void start_shortest_paths(const Indexed_surface& s, const std::vector<Path_source>& sources,
+                                 Shortest_path_tree& tree, Path_queue& queue)
 {
-  typedef std::pair<double, int> Item;
   const std::size_t n = static_cast<std::size_t>(s.number_of_vertices());
   tree.distance.assign(n, std::numeric_limits<double>::infinity());
   tree.parent_edge.assign(n, -1);
-  std::vector<char> settled(n, 0);
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item> > queue;
   for(const Path_source& src : sources)
   {
     const std::size_t v = static_cast<std::size_t>(src.vertex);
@@ -119,9 +116,44 @@ void shortest_paths(const Indexed_surface& s, const std::vector<Path_source>& so
       queue.emplace(src.distance, src.vertex);
     }
   }
+}
+
+// Relaxes the usable edges of the settled vertex v, at distance d.
+template <class Usable>
+void relax_edges(const Indexed_surface& s, int v, double d, const Usable& usable, const std::vector<char>& settled,
+                 Shortest_path_tree& tree, Path_queue& queue)
+{
+  const std::size_t i = static_cast<std::size_t>(v);
+  for(int k = s.ring_offsets[i]; k < s.ring_offsets[i + 1]; ++k)
+  {
+    const int e = s.ring_edges[static_cast<std::size_t>(k)];
+    if(!usable(e))
+      continue;
+    const std::size_t w = static_cast<std::size_t>(s.other_end(e, v));
+    const double dw = d + s.edge_lengths[static_cast<std::size_t>(e)];
+    if(!settled[w] && dw < tree.distance[w])
+    {
+      tree.distance[w] = dw;
+      tree.parent_edge[w] = e;
+      queue.emplace(dw, static_cast<int>(w));
+    }
+  }
+}
+
+// Runs Dijkstra from the sources. `usable(e)` says whether an edge may be walked, `relay(v)`
+// whether a settled vertex is expanded; `settle(v, d)` is called for every settled vertex
+// and returns true to stop. Ties are broken by vertex index (deterministic).
+template <class Usable, class Relay, class Settle>
+void shortest_paths(const Indexed_surface& s, const std::vector<Path_source>& sources,
+                    const Usable& usable, const Relay& relay, const Settle& settle,
+                    Shortest_path_tree& tree)
+{
+  Path_queue queue;
+  start_shortest_paths(s, sources, tree, queue);
+  std::vector<char> settled(tree.distance.size(), 0);
   while(!queue.empty())
   {
-    const Item top = queue.top();
+    const std::pair<double, int> top = queue.top();
     queue.pop();
     const std::size_t v = static_cast<std::size_t>(top.second);
     if(settled[v] || top.first > tree.distance[v])
@@ -129,33 +161,22 @@ void shortest_paths(const Indexed_surface& s, const std::vector<Path_source>& so
     settled[v] = 1;
     if(settle(top.second, top.first))
       return;
-    if(!relay(top.second))
-      continue;
-    for(int k = s.ring_offsets[v]; k < s.ring_offsets[v + 1]; ++k)
-    {
-      const int e = s.ring_edges[static_cast<std::size_t>(k)];
-      if(!usable(e))
-        continue;
-      const std::size_t w = static_cast<std::size_t>(s.other_end(e, top.second));
-      const double d = top.first + s.edge_lengths[static_cast<std::size_t>(e)];
-      if(!settled[w] && d < tree.distance[w])
-      {
-        tree.distance[w] = d;
-        tree.parent_edge[w] = e;
-        queue.emplace(d, static_cast<int>(w));
-      }
-    }
+    if(relay(top.second))
+      relax_edges(s, top.second, top.first, usable, settled, tree, queue);
   }
 }
 
-// Marks the tree path from v up to its source.
+// Marks the tree path from v up to its source in `cut`, and its vertices but the source in
+// `on_path` (when not null).
 inline void mark_tree_path(const Indexed_surface& s, const Shortest_path_tree& tree, int v,
-                           std::vector<char>& cut)
+                           std::vector<char>& cut, std::vector<char>* on_path = nullptr)
 {
   while(tree.parent_edge[static_cast<std::size_t>(v)] >= 0)
   {
     const int e = tree.parent_edge[static_cast<std::size_t>(v)];
     cut[static_cast<std::size_t>(e)] = 1;
+    if(on_path)
+      (*on_path)[static_cast<std::size_t>(v)] = 1;
     v = s.other_end(e, v);
   }
 }
@@ -185,26 +206,12 @@ private:
   std::vector<std::size_t> m_parent;
 };
 
-// The greedy system of loops (closed surface, based at `root`) or of arcs (surface with
-// border, based at the whole border): marks its edges in `cut` and returns the number of
-// loops or arcs, 2g on a closed surface and 2g + b - 1 with b border loops.
-//
-// T is the shortest path tree (forest, with border) from the base; C* the maximum spanning
-// tree of the dual graph (faces joined across the interior edges not in T), where the weight
-// of an edge uv is the length d(u) + |uv| + d(v) of the loop or arc that it closes with T;
-// every interior edge in neither (a closing edge, listed in `closing_edges`) gives one loop or
-// arc (Eppstein's tree-cotree
-// decomposition; with this T and C*, Erickson and Whittlesey's greedy generators). With a
-// border, the count is that of the surface whose border vertices are contracted to one vertex
-// and whose border edges are dropped: T has V_int edges, C* has F - 1, and the
-// E_int - V_int - F + 1 = 1 - chi = 2g + b - 1 others are the arcs. The surface minus T, the
-// arcs and the border is the union of the faces glued across C*: an open disk.
-inline int greedy_system_of_cuts(const Indexed_surface& s, int root, std::vector<char>& cut,
-                                 std::vector<int>* closing_edges = nullptr)
+// The shortest path tree of the greedy system: from the whole border (with border), or from
+// `root` (closed surface), over the interior edges.
+inline void system_tree(const Indexed_surface& s, int root, Shortest_path_tree& tree)
 {
-  const bool with_border = !s.border_loops.empty();
   std::vector<Path_source> sources;
-  if(with_border)
+  if(!s.border_loops.empty())
   {
     for(int v = 0; v < s.number_of_vertices(); ++v)
       if(s.border_vertex[static_cast<std::size_t>(v)])
@@ -212,17 +219,21 @@ inline int greedy_system_of_cuts(const Indexed_surface& s, int root, std::vector
   }
   else
     sources.push_back({root, 0., -1});
-  Shortest_path_tree tree;
   shortest_paths(
     s, sources, [&s](int e) { return !s.border_edge[static_cast<std::size_t>(e)]; },
     [](int) { return true; }, [](int, double) { return false; }, tree);
+}
 
+// The dual edges of the greedy system (the interior edges not in the tree) with the length
+// d(u) + |uv| + d(v) of the loop or arc each closes with the tree, heaviest first (ties by
+// edge index).
+inline std::vector<std::pair<double, int> > weighted_dual_edges(const Indexed_surface& s,
+                                                                const Shortest_path_tree& tree)
+{
   std::vector<char> in_tree(static_cast<std::size_t>(s.number_of_edges()), 0);
   for(int e : tree.parent_edge)
     if(e >= 0)
       in_tree[static_cast<std::size_t>(e)] = 1;
-
-  // the dual edges, heaviest first (ties by edge index)
   std::vector<std::pair<double, int> > dual;
   for(int e = 0; e < s.number_of_edges(); ++e)
   {
@@ -236,9 +247,30 @@ inline int greedy_system_of_cuts(const Indexed_surface& s, int root, std::vector
   std::sort(dual.begin(), dual.end(), [](const std::pair<double, int>& a, const std::pair<double, int>& b) {
     return a.first > b.first || (a.first == b.first && a.second < b.second);
   });
+  return dual;
+}
+
+// The greedy system of loops (closed surface, based at `root`) or of arcs (surface with
+// border, based at the whole border): marks its edges in `cut` and returns the number of
+// loops or arcs, 2g on a closed surface and 2g + b - 1 with b border loops.
+//
+// T is the shortest path tree (forest, with border) from the base; C* the maximum spanning
+// tree of the dual graph (faces joined across the interior edges not in T), where the weight
+// of an edge uv is the length d(u) + |uv| + d(v) of the loop or arc that it closes with T;
+// every interior edge in neither (a closing edge, listed in `closing_edges`) gives one loop or
+// arc (Eppstein's tree-cotree decomposition; with this T and C*, Erickson and Whittlesey's
+// greedy generators). With a border, the count is that of the surface whose border vertices
+// are contracted to one vertex and whose border edges are dropped: T has V_int edges, C* has
+// F - 1, and the E_int - V_int - F + 1 = 1 - chi = 2g + b - 1 others are the arcs. The surface
+// minus T, the arcs and the border is the union of the faces glued across C*: an open disk.
+inline int greedy_system_of_cuts(const Indexed_surface& s, int root, std::vector<char>& cut,
+                                 std::vector<int>* closing_edges = nullptr)
+{
+  Shortest_path_tree tree;
+  system_tree(s, root, tree);
   Disjoint_sets faces(static_cast<std::size_t>(s.number_of_faces()));
   int loops = 0;
-  for(const std::pair<double, int>& d : dual)
+  for(const std::pair<double, int>& d : weighted_dual_edges(s, tree))
   {
     const std::array<int, 2>& ef = s.edge_faces[static_cast<std::size_t>(d.second)];
     if(faces.unite(static_cast<std::size_t>(ef[0]), static_cast<std::size_t>(ef[1])))
@@ -301,6 +333,36 @@ inline void prune_cut(const Indexed_surface& s, const std::vector<char>& termina
   }
 }
 
+// The nearest vertex flagged in `waiting` from the vertices flagged in `connected`, by a
+// shortest path over interior edges through no vertex flagged in `avoided` (the path in
+// `tree`); -1 when none can be reached.
+inline int nearest_waiting_vertex(const Indexed_surface& s, const std::vector<char>& waiting,
+                                  const std::vector<char>& avoided, const std::vector<char>& connected,
+                                  Shortest_path_tree& tree)
+{
+  std::vector<Path_source> sources;
+  for(int v = 0; v < s.number_of_vertices(); ++v)
+    if(connected[static_cast<std::size_t>(v)])
+      sources.push_back({v, 0., -1});
+  int reached = -1;
+  shortest_paths(
+    s, sources,
+    [&s, &avoided](int e) {
+      const std::array<int, 2>& ev = s.edge_vertices[static_cast<std::size_t>(e)];
+      return !s.border_edge[static_cast<std::size_t>(e)] && !avoided[static_cast<std::size_t>(ev[0])] &&
+             !avoided[static_cast<std::size_t>(ev[1])];
+    },
+    [](int) { return true; },
+    [&](int v, double) {
+      if(!waiting[static_cast<std::size_t>(v)])
+        return false;
+      reached = v;
+      return true;
+    },
+    tree);
+  return reached;
+}
+
 // Joins every terminal to the cut, the nearest first, by a shortest path over interior edges
 // from the vertices already connected (`connected`: the vertices of the cut and of the
 // border; updated), through no vertex flagged in `avoided`. Returns false when a terminal
@@ -318,39 +380,13 @@ inline bool connect_terminals(const Indexed_surface& s, const std::vector<int>& 
       ++left;
     }
   Shortest_path_tree tree;
-  while(left > 0)
+  for(; left > 0; --left)
   {
-    std::vector<Path_source> sources;
-    for(int v = 0; v < s.number_of_vertices(); ++v)
-      if(connected[static_cast<std::size_t>(v)])
-        sources.push_back({v, 0., -1});
-    int reached = -1;
-    shortest_paths(
-      s, sources,
-      [&s, &avoided](int e) {
-        const std::array<int, 2>& ev = s.edge_vertices[static_cast<std::size_t>(e)];
-        return !s.border_edge[static_cast<std::size_t>(e)] && !avoided[static_cast<std::size_t>(ev[0])] &&
-               !avoided[static_cast<std::size_t>(ev[1])];
-      },
-      [](int) { return true; },
-      [&](int v, double) {
-        if(!waiting[static_cast<std::size_t>(v)])
-          return false;
-        reached = v;
-        return true;
-      },
-      tree);
+    const int reached = nearest_waiting_vertex(s, waiting, avoided, connected, tree);
     if(reached < 0)
       return false;
     waiting[static_cast<std::size_t>(reached)] = 0;
-    --left;
-    for(int v = reached; tree.parent_edge[static_cast<std::size_t>(v)] >= 0;)
-    {
-      const int e = tree.parent_edge[static_cast<std::size_t>(v)];
-      cut[static_cast<std::size_t>(e)] = 1;
-      connected[static_cast<std::size_t>(v)] = 1;
-      v = s.other_end(e, v);
-    }
+    mark_tree_path(s, tree, reached, cut, &connected);
     connected[static_cast<std::size_t>(reached)] = 1;
   }
   return true;
@@ -385,202 +421,6 @@ inline bool is_disk_cut(const Indexed_surface& s, const std::vector<char>& cut, 
     vertices += s.border_vertex[static_cast<std::size_t>(v)] ? 1 + d : (std::max)(1, d);
   }
   return vertices - (long(s.number_of_edges()) + seams) + long(s.number_of_faces()) == chi;
-}
-
-// A path of seam edges between two nodes of the cut (vertices that are not of cut degree 2,
-// lie on the border, or are terminals): vertices.front() and vertices.back() are the nodes.
-struct Cut_segment
-{
-  std::vector<int> vertices;
-  std::vector<int> edges;
-};
-
-inline std::vector<Cut_segment> cut_segments(const Indexed_surface& s, const std::vector<char>& cut,
-                                             const std::vector<char>& terminal)
-{
-  const std::vector<int> degree = seam_degrees(s, cut);
-  auto is_node = [&](int v) {
-    const std::size_t i = static_cast<std::size_t>(v);
-    return degree[i] != 2 || s.border_vertex[i] || terminal[i];
-  };
-  std::vector<char> walked(static_cast<std::size_t>(s.number_of_edges()), 0);
-  std::vector<Cut_segment> segments;
-  for(int a = 0; a < s.number_of_vertices(); ++a)
-  {
-    if(degree[static_cast<std::size_t>(a)] == 0 || !is_node(a))
-      continue;
-    for(int k = s.ring_offsets[static_cast<std::size_t>(a)]; k < s.ring_offsets[static_cast<std::size_t>(a) + 1]; ++k)
-    {
-      int e = s.ring_edges[static_cast<std::size_t>(k)];
-      if(!cut[static_cast<std::size_t>(e)] || walked[static_cast<std::size_t>(e)])
-        continue;
-      Cut_segment segment;
-      segment.vertices.push_back(a);
-      int v = a;
-      while(true)
-      {
-        walked[static_cast<std::size_t>(e)] = 1;
-        segment.edges.push_back(e);
-        v = s.other_end(e, v);
-        segment.vertices.push_back(v);
-        if(is_node(v))
-          break;
-        int next = -1;  // the other seam edge of v
-        for(int j = s.ring_offsets[static_cast<std::size_t>(v)]; j < s.ring_offsets[static_cast<std::size_t>(v) + 1]; ++j)
-        {
-          const int f = s.ring_edges[static_cast<std::size_t>(j)];
-          if(cut[static_cast<std::size_t>(f)] && f != e)
-            next = f;
-        }
-        e = next;
-      }
-      segments.push_back(std::move(segment));
-    }
-  }
-  return segments;
-}
-
-// The edges around `v` in the two wedges beside edge `e` (between the nearest cut or border
-// edges before and after it in the rotation, `e` included), flagged in `flags`. Returns false
-// when `v` has no other cut or border edge (then every edge of `v` is flagged).
-inline bool flag_wedges_beside(const Indexed_surface& s, const std::vector<char>& cut, int v, int e,
-                               std::vector<char>& flags, std::vector<int>& flagged)
-{
-  const std::size_t i = static_cast<std::size_t>(v);
-  const int begin = s.ring_offsets[i], size = s.ring_offsets[i + 1] - begin;
-  auto edge_at = [&](int k) { return s.ring_edges[static_cast<std::size_t>(begin + ((k % size) + size) % size)]; };
-  auto is_cut = [&](int f) { return cut[static_cast<std::size_t>(f)] || s.border_edge[static_cast<std::size_t>(f)]; };
-  int position = 0;
-  while(edge_at(position) != e)
-    ++position;
-  bool bounded = false;
-  for(int step : {1, -1})
-    for(int k = 0; k < size; ++k)
-    {
-      const int f = edge_at(position + step * k);
-      if(k > 0 && is_cut(f))
-      {
-        bounded = true;
-        break;
-      }
-      if(!flags[static_cast<std::size_t>(f)])
-      {
-        flags[static_cast<std::size_t>(f)] = 1;
-        flagged.push_back(f);
-      }
-    }
-  return bounded;
-}
-
-// Tries to replace the segment by a shorter path between its nodes, leaving each node in the
-// wedges beside the segment's end edges and avoiding every other vertex of the cut and of the
-// border; keeps the new path only if the cut is still a disk. Returns whether it did.
-inline bool shorten_segment(const Indexed_surface& s, const Cut_segment& segment, long chi, std::vector<char>& cut)
-{
-  const int a = segment.vertices.front(), b = segment.vertices.back();
-  double old_length = 0.;
-  for(int e : segment.edges)
-  {
-    old_length += s.edge_lengths[static_cast<std::size_t>(e)];
-    cut[static_cast<std::size_t>(e)] = 0;
-  }
-  auto restore = [&]() {
-    for(int e : segment.edges)
-      cut[static_cast<std::size_t>(e)] = 1;
-    return false;
-  };
-  const std::vector<int> degree = seam_degrees(s, cut);
-  auto blocked = [&](int v) {
-    const std::size_t i = static_cast<std::size_t>(v);
-    return v == a || v == b || degree[i] > 0 || s.border_vertex[i];
-  };
-  std::vector<char> start(static_cast<std::size_t>(s.number_of_edges()), 0), end(start);
-  std::vector<int> start_edges, end_edges;
-  const bool a_bounded = flag_wedges_beside(s, cut, a, segment.edges.front(), start, start_edges);
-  const bool b_bounded = flag_wedges_beside(s, cut, b, segment.edges.back(), end, end_edges);
-  if(a == b)
-  {
-    if(!a_bounded || !b_bounded)
-      return restore();
-    for(int e : start_edges)
-      if(end[static_cast<std::size_t>(e)])
-        return restore();  // the wedges overlap: no side to keep
-  }
-
-  double best = old_length * (1. - 1e-9);
-  int best_last = -1;  // the last edge of the best path (into b)
-  std::vector<Path_source> sources;
-  for(int e : start_edges)
-  {
-    const int m = s.other_end(e, a);
-    const double l = s.edge_lengths[static_cast<std::size_t>(e)];
-    if(m == b && end[static_cast<std::size_t>(e)] && a != b && l < best)
-    {
-      best = l;
-      best_last = e;
-    }
-    else if(!blocked(m))
-      sources.push_back({m, l, e});
-  }
-  Shortest_path_tree tree;
-  shortest_paths(
-    s, sources, [&s, &cut](int e) { return !cut[static_cast<std::size_t>(e)] && !s.border_edge[static_cast<std::size_t>(e)]; },
-    [&](int v) { return !blocked(v); },
-    [&](int v, double d) {
-      if(d >= best)
-        return true;
-      if(blocked(v))
-        return false;
-      const std::size_t i = static_cast<std::size_t>(v);
-      for(int k = s.ring_offsets[i]; k < s.ring_offsets[i + 1]; ++k)
-      {
-        const int e = s.ring_edges[static_cast<std::size_t>(k)];
-        if(end[static_cast<std::size_t>(e)] && s.other_end(e, v) == b &&
-           e != tree.parent_edge[i] && d + s.edge_lengths[static_cast<std::size_t>(e)] < best)
-        {
-          best = d + s.edge_lengths[static_cast<std::size_t>(e)];
-          best_last = e;
-        }
-      }
-      return false;
-    },
-    tree);
-  if(best_last < 0)
-    return restore();
-
-  std::vector<int> path(1, best_last);
-  for(int v = s.other_end(best_last, b); v != a;)
-  {
-    const int e = tree.parent_edge[static_cast<std::size_t>(v)];
-    path.push_back(e);
-    v = s.other_end(e, v);
-  }
-  for(int e : path)
-    cut[static_cast<std::size_t>(e)] = 1;
-  if(is_disk_cut(s, cut, chi))
-    return true;
-  for(int e : path)
-    cut[static_cast<std::size_t>(e)] = 0;
-  return restore();
-}
-
-// Shortens the segments of the cut, pass after pass, until no segment gets shorter or after
-// `max_passes` passes; `chi` as for is_disk_cut(). Returns the number of replacements.
-inline int shorten_cut(const Indexed_surface& s, const std::vector<char>& terminal, long chi, int max_passes,
-                       std::vector<char>& cut)
-{
-  int replaced = 0;
-  for(int pass = 0; pass < max_passes; ++pass)
-  {
-    int this_pass = 0;
-    for(const Cut_segment& segment : cut_segments(s, cut, terminal))
-      if(shorten_segment(s, segment, chi, cut))
-        ++this_pass;
-    replaced += this_pass;
-    if(this_pass == 0)
-      break;
-  }
-  return replaced;
 }
 
 } // namespace internal
