@@ -31,6 +31,7 @@
 #include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -81,14 +82,17 @@ int main(int argc, char** argv)
   // The border parameterizer can also run alone, with the report of its call (the center,
   // the measured distances, the polygon). CGAL's DCP calls it without a report. The report
   // names the center by its position in vertices(mesh): its index in a Surface_mesh without
-  // removed vertices.
+  // removed vertices. Poisson_border_distance measures in values of the paper's Eq. 1, not
+  // in lengths: only their ratios shape the border.
   SMP::Parameterization_report report;
   auto border_uv = mesh.add_property_map<vertex_descriptor, Kernel::Point_2>("v:border_uv").first;
   auto border_done = mesh.add_property_map<vertex_descriptor, bool>("v:border_done", false).first;
   Border().parameterize(mesh, bhd, border_uv, CGAL::Identity_property_map<vertex_descriptor>(), border_done, &report);
   std::cout << input << ": " << num_vertices(mesh) << " vertices, center " << Mesh::Vertex_index(report.center)
             << " at " << mesh.point(Mesh::Vertex_index(report.center)) << ", border of " << report.border_uv.size()
-            << " vertices (" << (report.border_convex ? "convex" : "not convex") << ")\n";
+            << " vertices (" << (report.border_convex ? "convex" : "not convex") << "), measured distances from "
+            << *std::min_element(report.border_distances.begin(), report.border_distances.end()) << " to "
+            << *std::max_element(report.border_distances.begin(), report.border_distances.end()) << "\n";
 
   std::ofstream out(output);
   SMP::IO::output_uvmap_to_off(mesh, bhd, uvmap, out);
