@@ -7,19 +7,16 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// A batch run: every mesh of a folder flattened by Conformal_parameterizer_3 (automatic
-// border), several meshes at a time on a pool of threads, with a summary table.
+// A batch run: the longest border of every .off, .obj, .ply and .stl mesh of a folder flattened
+// by Conformal_parameterizer_3 (automatic border), THREADS meshes at a time (default: the
+// number of cores), and a summary table.
 //
 //   batch_parameterization MESH_DIR [THREADS]
 //
-// Parameterizes the longest border of every .off, .obj, .ply and .stl file of MESH_DIR (holes
-// are filled virtually), THREADS at a time (default: the number of cores). A parameterizer
-// holds no state of its calls: the threads share one. Each call runs sequentially (the default
-// CGAL::Sequential_tag): the parallelism is across meshes.
-//
-// Exit status 1 when MESH_DIR holds no mesh, none could be parameterized, or the method fails
-// on a mesh it accepts. Unreadable files, closed meshes, meshes with handles and inputs the
-// parameterizer rejects (a face of zero area, no interior vertex...) are reported, not failures.
+// A parameterizer holds no state of its calls: the threads share one; each call runs
+// sequentially (the default CGAL::Sequential_tag). Exit status 1 when no mesh could be
+// parameterized or the method fails on a mesh it accepts; unreadable files, closed meshes and
+// inputs the parameterizer rejects (handles, a face of zero area...) are reported, not failures.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -137,7 +134,8 @@ int main(int argc, char** argv)
     t.join();
 
   // The summary table (markdown).
-  std::printf("\n| mesh | V | F | outcome | angle dist. | flips | repaired | time (s) |\n|---|---|---|---|---|---|---|---|\n");
+  std::printf("\n| mesh | V | F | outcome | angle dist. | flips | repaired | time (s) |\n"
+              "|---|---|---|---|---|---|---|---|\n");
   std::size_t parameterized = 0, failures = 0;
   for(const Result& r : results)
   {

@@ -112,7 +112,8 @@ int main(int argc, char** argv)
   typedef SMP::Measured_border<SMP::Fixed_center<Mesh>, SMP::Straightest_geodesic_border_distance> Straightest;
   const SMP::Conformal_parameterizer_3<Mesh, Straightest> mbpsgp(
     Straightest(SMP::Fixed_center<Mesh>(Mesh::Vertex_index(mbppp.center))));
-  const SMP::Parameterization_report straightest = run("4 measured: fixed center + straightest", mesh, bhd, mbpsgp, uvmap);
+  const SMP::Parameterization_report straightest =
+    run("4 measured: fixed center + straightest", mesh, bhd, mbpsgp, uvmap);
   if(straightest.status == SMP::ERROR_DISTANCE_COMPUTATION_FAILED)
     std::cout << "  (expected on some meshes: " << straightest.unreachable_border_vertices
               << " border vertices not reached)\n";

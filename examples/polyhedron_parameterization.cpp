@@ -89,8 +89,8 @@ int main(int argc, char** argv)
             << report.statistics.factorization_seconds << " s), " << report.statistics.back_substitutions
             << " back-substitutions (" << report.statistics.back_substitution_seconds << " s)\n";
   if(report.repaired)
-    std::cout << "repair: " << report.flipped_faces_before_repair << " flipped faces; border blended toward a circle by "
-              << report.blend << ", " << (report.mean_value_interior ? "mean value" : "discrete conformal")
+    std::cout << "repair: " << report.flipped_faces_before_repair << " flipped faces; border blended toward a circle"
+              << " by " << report.blend << ", " << (report.mean_value_interior ? "mean value" : "discrete conformal")
               << " interior\n";
   else
     std::cout << "repair: none needed\n";

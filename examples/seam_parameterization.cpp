@@ -7,20 +7,17 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// Parameterizing a closed surface: the mesh is cut open along seams with CGAL::Seam_mesh, and
-// the measured boundary parameterization maps the cut mesh, whose border runs along both sides
-// of every seam.
+// Parameterizing a closed surface: the mesh is cut open along seams with CGAL::Seam_mesh and
+// the measured boundary parameterization maps the cut mesh, whose border runs along both
+// sides of every seam.
 //
 //   seam_parameterization [INPUT] [SEAMS.selection.txt] [OUTPUT.obj]
 //
-// Defaults: CGAL's fandisk.off (closed, genus 0), data/fandisk.selection.txt (59 edges: the
-// shortest edge path between two far-apart vertices), seam_parameterization.obj. The seams are
-// a CGAL selection file, read by Seam_mesh::add_seams(): its third line lists the seam edges
-// as pairs of 0-based vertex indices in file order. They must cut the surface into a disk: a
-// tree on a surface of genus 0; 2g independent loops for genus g (data/torus.off with
-// data/torus_cut_graph.selection.txt; with data/torus_meridian_path.selection.txt a handle is
-// left, and the program says so). The OBJ has a 'v' per mesh vertex, a 'vt' per seam mesh
-// vertex (one per side of a seam) and the faces as 'f v/vt v/vt v/vt'.
+// Defaults: CGAL's fandisk.off, data/fandisk.selection.txt (a CGAL selection file: its third
+// line lists the seam edges as pairs of 0-based vertex indices in file order), and
+// seam_parameterization.obj ('v' per mesh vertex, 'vt' per seam mesh vertex). The seams must
+// cut the surface into a disk: a tree on a surface of genus 0, 2g independent loops for genus
+// g (data/torus.off with data/torus_cut_graph.selection.txt; torus_meridian_path leaves a handle).
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -55,7 +52,6 @@ typedef CGAL::Seam_mesh<Mesh, Seam_edge_pmap, Seam_vertex_pmap>      Seam_mesh;
 // A vertex of the seam mesh is a halfedge of the mesh: one per side of a seam.
 typedef boost::graph_traits<Seam_mesh>::vertex_descriptor            vertex_descriptor;
 typedef boost::graph_traits<Seam_mesh>::halfedge_descriptor          halfedge_descriptor;
-typedef boost::graph_traits<Seam_mesh>::face_descriptor              face_descriptor;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
@@ -98,8 +94,7 @@ int main(int argc, char** argv)
             << " vertices, genus " << after.second << ", " << after.first << " border loops\n";
   if(after.first > std::max(1L, before.first))
   {
-    std::cerr << "error: the seams open " << after.first << " border loops: they must form one cut graph that"
-              << " joins the border, if any (a tree on a surface of genus 0)\n";
+    std::cerr << "error: the seams open " << after.first << " border loops: use one cut graph joined to the border\n";
     return EXIT_FAILURE;
   }
 
@@ -111,11 +106,9 @@ int main(int argc, char** argv)
   const SMP::Error_code status = SMP::parameterize(seam_mesh, parameterizer, bhd, uvmap, &report);
   if(status != SMP::OK)
   {
-    std::cerr << "error: " << SMP::get_measured_error_message(status);
-    if(status == SMP::ERROR_NO_TOPOLOGICAL_DISC && after.second > 0)
-      std::cerr << ": the seams do not cut every handle (the cut mesh has genus " << after.second << "; a mesh of"
-                << " genus g needs seams with 2g independent loops, for a torus a meridian and a longitude)";
-    std::cerr << "\n";
+    const bool handle_left = (status == SMP::ERROR_NO_TOPOLOGICAL_DISC && after.second > 0);
+    std::cerr << "error: " << SMP::get_measured_error_message(status)
+              << (handle_left ? ": the seams do not cut every handle (genus g needs 2g loops)" : "") << "\n";
     return EXIT_FAILURE;
   }
 
@@ -133,7 +126,7 @@ int main(int argc, char** argv)
   if(!one_to_one)
     return EXIT_FAILURE;
 
-  // The OBJ: 'v' per mesh vertex, 'vt' per seam mesh vertex.
+  // The OBJ: a vertex on a seam has one 'vt' per side.
   std::ofstream out(output);
   out.precision(17);
   for(Mesh::Vertex_index v : vertices(mesh))
@@ -145,7 +138,7 @@ int main(int argc, char** argv)
     put(vt, v, ++n);
     out << "vt " << get(uvmap, v) << "\n";
   }
-  for(face_descriptor f : faces(seam_mesh))
+  for(auto f : faces(seam_mesh))
   {
     out << "f";
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, seam_mesh), seam_mesh))
