@@ -35,6 +35,7 @@
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
