@@ -13,7 +13,7 @@
 //   make_figures MESH_DIR FIG_DIR WORK_DIR [--zoom=Z]
 //
 // writes into WORK_DIR one SVG per composite figure (3D views rendered by raster.h and
-// embedded as PNG, UV layouts drawn as vectors by examples/cli/svg_layout.h); the script
+// embedded as PNG, UV layouts drawn as vectors by cli/svg_layout.h); the script
 // scripts/make_figures.sh turns each into FIG_DIR/NAME.png with rsvg-convert (at zoom Z, the
 // resolution the 3D views are rendered for). FIG_DIR receives the vector UV layouts (SVG) and
 // figures.md, which lists every figure with what it shows and its distortion figures.
@@ -44,7 +44,7 @@
 
 #include <Eigen/SparseLU>
 
-#include "../../examples/cli/svg_layout.h"
+#include "../../cli/svg_layout.h"
 #include "raster.h"
 
 #include <algorithm>
@@ -98,7 +98,7 @@ std::string fixed(double x, int decimals = 4)
   return b;
 }
 
-std::string esc(const std::string& s) { return mbp_cli::internal::xml_escaped(s); }
+std::string esc(const std::string& s) { return mbp_cli::detail::xml_escaped(s); }
 
 // ------------------------------------------------------------------------------- meshes
 
@@ -390,7 +390,7 @@ public:
     {
       const double top = y + h * (bins - 1 - b) / bins;
       m_body += "<rect x=\"" + fixed(x, 1) + "\" y=\"" + fixed(top, 2) + "\" width=\"" + fixed(w, 1) + "\" height=\"" +
-                fixed(h / bins + 0.3, 2) + "\" fill=\"" + mbp_cli::internal::viridis((b + 0.5) / bins) + "\"/>";
+                fixed(h / bins + 0.3, 2) + "\" fill=\"" + mbp_cli::detail::viridis((b + 0.5) / bins) + "\"/>";
     }
     m_body += "<rect x=\"" + fixed(x, 1) + "\" y=\"" + fixed(y, 1) + "\" width=\"" + fixed(w, 1) + "\" height=\"" +
               fixed(h, 1) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"0.8\"/>\n";
@@ -400,8 +400,8 @@ public:
       m_body += "<path d=\"M" + fixed(x + w, 1) + " " + fixed(ty, 1) + "h5\" stroke=\"#000000\" stroke-width=\"0.8\"/>";
       text(x + w + 8., ty + 4., label, 11.);
     };
-    tick(1., "\xe2\x89\xa5 " + mbp_cli::internal::tick_text(hi));
-    tick(0., "\xe2\x89\xa4 " + mbp_cli::internal::tick_text(lo));
+    tick(1., "\xe2\x89\xa5 " + mbp_cli::detail::tick_text(hi));
+    tick(0., "\xe2\x89\xa4 " + mbp_cli::detail::tick_text(lo));
     const double gap = 14. / h;
     double last = -1.;
     const bool fine = lhi - llo < 2.;
@@ -413,7 +413,7 @@ public:
         const double t = (std::log10(m) + e - llo) / (lhi - llo);
         if(t > gap && t < 1. - gap && t > last + gap)
         {
-          tick(t, mbp_cli::internal::tick_text(m * std::pow(10., e)));
+          tick(t, mbp_cli::detail::tick_text(m * std::pow(10., e)));
           last = t;
         }
       }

@@ -53,7 +53,7 @@ struct Svg_layout
                                                           // layout (for a picture shown smaller than its nominal size)
 };
 
-namespace internal {
+namespace detail {
 
 inline std::string xml_escaped(const std::string& s)
 {
@@ -108,13 +108,13 @@ inline std::string tick_text(double x)
   return buffer;
 }
 
-} // namespace internal
+} // namespace detail
 
 /// the SVG document of `layout`.
 inline std::string svg_document(const Svg_layout& layout)
 {
-  using internal::append_coordinate;
-  using internal::xml_escaped;
+  using detail::append_coordinate;
+  using detail::xml_escaped;
   const double unit = 1e4;                // SVG units per UV unit
   const long pad = 300, line = 300;       // 10 SVG units = 1 pixel at the nominal size
   const long legend_width = 3400, bar_width = 400, bar_height = 5000;
@@ -178,7 +178,7 @@ inline std::string svg_document(const Svg_layout& layout)
     const double t = (std::log10(a) - log_lo) / (log_hi - log_lo);
     return std::clamp(int(t * bins), 0, bins - 1);
   };
-  auto bin_color = [&](int b) { return internal::viridis((b + 0.5) / bins); };
+  auto bin_color = [&](int b) { return detail::viridis((b + 0.5) / bins); };
 
   // Faces per bin, flipped faces apart.
   std::vector<std::string> paths(static_cast<std::size_t>(bins));
@@ -338,8 +338,8 @@ inline std::string svg_document(const Svg_layout& layout)
     tick(0.5, "0 (all faces)");
   else
   {
-    tick(1., "\xe2\x89\xa5 " + internal::tick_text(hi));  // >=
-    tick(0., "\xe2\x89\xa4 " + internal::tick_text(lo));  // <=
+    tick(1., "\xe2\x89\xa5 " + detail::tick_text(hi));  // >=
+    tick(0., "\xe2\x89\xa4 " + detail::tick_text(lo));  // <=
     // powers of ten, and also 2 and 5 times them when the range spans less than two decades
     const double min_gap = 350. / double(bar_height);     // keep labels apart
     const bool fine = log_hi - log_lo < 2.;
@@ -352,7 +352,7 @@ inline std::string svg_document(const Svg_layout& layout)
         const double t = (std::log10(m) + e - log_lo) / (log_hi - log_lo);
         if(t > min_gap && t < 1. - min_gap && t > last + min_gap)
         {
-          tick(t, internal::tick_text(m * std::pow(10., e)));
+          tick(t, detail::tick_text(m * std::pow(10., e)));
           last = t;
         }
       }

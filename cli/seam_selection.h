@@ -44,7 +44,7 @@
 
 namespace mbp_cli {
 
-namespace internal {
+namespace detail {
 
 // The whitespace-separated tokens of `line`.
 inline std::vector<std::string> tokens_of(const std::string& line)
@@ -70,7 +70,7 @@ inline std::string parse_index(const std::string& token, std::size_t& value)
   return std::string();
 }
 
-} // namespace internal
+} // namespace detail
 
 /// reads the seams of the CGAL selection file `path` for the mesh `tm`: the edges of its
 /// third line, as pairs of 0-based vertex indices in the order of `vertices(tm)` (the file
@@ -123,12 +123,12 @@ std::string read_seam_selection(const std::string& path, const TriangleMesh& tm,
   // a selection of another mesh or a file of another kind is recognized.
   std::vector<std::size_t> indices[3];
   for(std::size_t l = 0; l < lines.size(); ++l)
-    for(const std::string& token : internal::tokens_of(lines[l]))
+    for(const std::string& token : detail::tokens_of(lines[l]))
     {
       if(l >= 3)
         return "line " + std::to_string(l + 1) + ": unexpected text after the seam edges of line 3 (" + format + ")";
       std::size_t i = 0;
-      const std::string error = internal::parse_index(token, i);
+      const std::string error = detail::parse_index(token, i);
       if(!error.empty())
         return "line " + std::to_string(l + 1) + ": " + error + " (" + format + ")";
       if(l == 0 && i >= nv)

@@ -70,7 +70,7 @@ inline std::string lowercase_extension(const std::string& path)
   return ext;
 }
 
-namespace internal {
+namespace detail {
 
 // Why the faces of `soup` do not form a polygon mesh, found after Euler::add_face refused
 // face `failed` (the faces before it were added): a face of fewer than three vertices or
@@ -115,7 +115,7 @@ inline std::string explain_soup(const Polygon_soup& soup, std::size_t failed)
          "form one fan)";
 }
 
-} // namespace internal
+} // namespace detail
 
 /// reads the polygon mesh of the file `path` (.off, .obj, .ply or .stl) with the streaming
 /// readers of mesh_reader.h, then builds it as CGAL's polygon soup to polygon mesh does
@@ -196,7 +196,7 @@ Failure read_mesh(const std::string& path, Mesh& mesh)
     if(!distinct || CGAL::Euler::add_face(face, mesh) == boost::graph_traits<Mesh>::null_face())
     {
       mesh.clear();
-      f.detail = "not a polygon mesh: " + internal::explain_soup(soup, i);
+      f.detail = "not a polygon mesh: " + detail::explain_soup(soup, i);
       return f;
     }
   }

@@ -47,7 +47,7 @@
 
 namespace mbp_cli {
 
-namespace output_internal {
+namespace output_detail {
 
 // The temporary files of this process, for the signal handler: a fixed array of paths (no
 // allocation in the handler), `count` of them in use.
@@ -140,7 +140,7 @@ inline const char* kind(const struct stat& st)
   return "not a regular file";
 }
 
-} // namespace output_internal
+} // namespace output_detail
 
 /// A file written through a buffer: text and numbers (std::to_chars), flushed in blocks.
 class Buffered_writer
@@ -273,7 +273,7 @@ public:
                         " the file it points to, or remove the link)";
       }
       if(!S_ISREG(st.st_mode))
-        return cannot + "it is " + output_internal::kind(st) + ", not a regular file";
+        return cannot + "it is " + output_detail::kind(st) + ", not a regular file";
       const std::string same = same_as_input(st, usage, t, path);
       if(!same.empty())
         return same;
@@ -316,7 +316,7 @@ public:
   Buffered_writer* begin(std::size_t k)
   {
     namespace fs = std::filesystem;
-    output_internal::install_handlers();
+    output_detail::install_handlers();
     Target& t = m_targets[k];
     const fs::path directory = fs::path(t.path).parent_path();
     for(int attempt = 0; attempt < 100; ++attempt)
@@ -324,7 +324,7 @@ public:
       const std::string name = ".mbp-" + std::to_string(::getpid()) + "-" + std::to_string(k) +
                                (attempt > 0 ? "-" + std::to_string(attempt) : std::string()) + ".tmp";
       const std::string temporary = directory.empty() ? name : (directory / name).string();
-      output_internal::Signals_blocked blocked;
+      output_detail::Signals_blocked blocked;
       const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
       if(fd < 0 && errno == EEXIST)
         continue;
@@ -333,7 +333,7 @@ public:
         m_error = "cannot write " + t.what + " '" + t.path + "': " + std::strerror(errno);
         return nullptr;
       }
-      if(!output_internal::register_path(temporary))
+      if(!output_detail::register_path(temporary))
       {
         ::close(fd);
         ::unlink(temporary.c_str());
@@ -383,15 +383,15 @@ public:
         continue;
       if(!S_ISREG(st.st_mode))  // changed since the check
       {
-        m_error = "cannot write " + t.what + " '" + t.path + "': it is " + output_internal::kind(st) +
+        m_error = "cannot write " + t.what + " '" + t.path + "': it is " + output_detail::kind(st) +
                   ", not a regular file";
         return false;
       }
       // a hard link where the file system has them, else the old file is renamed aside
       // just before its replacement
       const std::string backup = t.temporary.substr(0, t.temporary.size() - 4) + ".old";
-      output_internal::Signals_blocked blocked;
-      if(!output_internal::register_path(backup))
+      output_detail::Signals_blocked blocked;
+      if(!output_detail::register_path(backup))
       {
         m_error = "cannot write " + t.what + " '" + t.path + "': too many files";
         return false;
@@ -478,7 +478,7 @@ private:
 
   static void forget(std::string& path)
   {
-    output_internal::unregister_path(path);
+    output_detail::unregister_path(path);
     path.clear();
   }
 

@@ -156,7 +156,7 @@ inline std::string check_regular_input(const std::string& path)
   return file.open(path);
 }
 
-namespace reader_internal {
+namespace reader_detail {
 
 const std::size_t max_line_length = std::size_t(64) << 20;  // a face of millions of vertices still fits
 
@@ -1196,14 +1196,14 @@ inline Read_error read_ascii_stl(Input_file& file, Polygon_soup& soup)
   return e;
 }
 
-} // namespace reader_internal
+} // namespace reader_detail
 
 /// reads the polygon soup of the regular file `path` in the format of `extension` ("off",
 /// "obj", "ply" or "stl", lowercase). On failure the message names the problem (the caller
 /// names the file).
 inline Read_error read_polygon_soup(const std::string& path, const std::string& extension, Polygon_soup& soup)
 {
-  using namespace reader_internal;
+  using namespace reader_detail;
   Read_error e;
   Input_file file;
   e.message = file.open(path);
