@@ -258,57 +258,18 @@ public:
     Target t;
     t.path = path;
     t.what = what;
+    std::string error;
     if(exists)
-    {
-      if(S_ISLNK(st.st_mode))
-      {
-        struct stat pointed;
-        if(::stat(path.c_str(), &pointed) == 0)
-        {
-          const std::string same = same_as_input(pointed, usage, t, path);
-          if(!same.empty())
-            return same;
-        }
-        return cannot + "it is a symbolic link; the program does not replace a link by a file (give the path of"
-                        " the file it points to, or remove the link)";
-      }
-      if(!S_ISREG(st.st_mode))
-        return cannot + "it is " + output_detail::kind(st) + ", not a regular file";
-      const std::string same = same_as_input(st, usage, t, path);
-      if(!same.empty())
-        return same;
-      t.exists = true;
-      t.device = st.st_dev;
-      t.inode = st.st_ino;
-    }
+      error = check_existing_target(st, cannot, usage, t);
     else if(lstat_errno != ENOENT)
       return cannot + std::strerror(lstat_errno);
     else
-    {
-      // the directory must exist (the temporary file is created there)
-      const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-      struct stat d;
-      if(::stat(directory.c_str(), &d) != 0)
-        return cannot + "its directory '" + directory.string() + "': " + std::strerror(errno);
-      if(!S_ISDIR(d.st_mode))
-        return cannot + "'" + directory.string() + "' is not a directory";
-    }
-    t.canonical = canonical(path);
-    for(const Named& in : m_inputs)
-      if(!in.exists && !t.exists && t.canonical == canonical(in.path))
-      {
-        usage = true;
-        return what + " '" + path + "' names " + in.what + " '" + in.path + "'";
-      }
-    for(const Target& other : m_targets)
-      if((t.exists && other.exists && t.device == other.device && t.inode == other.inode) ||
-         t.canonical == other.canonical)
-      {
-        usage = true;
-        return what + " '" + path + "' and " + other.what + " '" + other.path + "' name the same file";
-      }
-    m_targets.push_back(t);
-    return std::string();
+      error = check_directory(target, cannot);
+    if(error.empty())
+      error = check_names(t, usage);
+    if(error.empty())
+      m_targets.push_back(t);
+    return error;
   }
 
   /// creates the temporary file of target `k` and returns its writer (null on failure: see
@@ -369,7 +330,101 @@ public:
   /// already renamed get their previous contents back (or are removed when there was none)
   bool publish()
   {
-    // hard links to the pre-existing targets, kept until every rename succeeded
+    if(!back_up_targets() || !rename_targets())
+      return false;
+    for(Target& t : m_targets)
+      if(!t.backup.empty())
+      {
+        ::unlink(t.backup.c_str());
+        forget(t.backup);
+      }
+    m_targets.clear();
+    return true;
+  }
+
+  /// the message of the last failure
+  const std::string& error() const { return m_error; }
+
+private:
+  struct Named
+  {
+    std::string path, what;
+    bool exists = false;
+    dev_t device = 0;
+    ino_t inode = 0;
+  };
+  struct Target : Named
+  {
+    std::filesystem::path canonical;
+    std::string temporary, backup;
+    Buffered_writer writer;
+    bool written = false, published = false, backup_by_rename = false;
+  };
+
+  // the checks of an existing target `t` (its lstat() `st`): a regular file that is no input
+  std::string check_existing_target(const struct stat& st, const std::string& cannot, bool& usage, Target& t) const
+  {
+    if(S_ISLNK(st.st_mode))
+    {
+      struct stat pointed;
+      if(::stat(t.path.c_str(), &pointed) == 0)
+      {
+        const std::string same = same_as_input(pointed, usage, t, t.path);
+        if(!same.empty())
+          return same;
+      }
+      return cannot + "it is a symbolic link; the program does not replace a link by a file (give the path of"
+                      " the file it points to, or remove the link)";
+    }
+    if(!S_ISREG(st.st_mode))
+      return cannot + "it is " + output_detail::kind(st) + ", not a regular file";
+    const std::string same = same_as_input(st, usage, t, t.path);
+    if(!same.empty())
+      return same;
+    t.exists = true;
+    t.device = st.st_dev;
+    t.inode = st.st_ino;
+    return std::string();
+  }
+
+  // the check of a target that does not exist: its directory must exist (the temporary file
+  // is created there)
+  static std::string check_directory(const std::filesystem::path& target, const std::string& cannot)
+  {
+    namespace fs = std::filesystem;
+    const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    struct stat d;
+    if(::stat(directory.c_str(), &d) != 0)
+      return cannot + "its directory '" + directory.string() + "': " + std::strerror(errno);
+    if(!S_ISDIR(d.st_mode))
+      return cannot + "'" + directory.string() + "' is not a directory";
+    return std::string();
+  }
+
+  // the target `t` may not name an input that does not exist yet, nor another target
+  std::string check_names(Target& t, bool& usage) const
+  {
+    t.canonical = canonical(t.path);
+    for(const Named& in : m_inputs)
+      if(!in.exists && !t.exists && t.canonical == canonical(in.path))
+      {
+        usage = true;
+        return t.what + " '" + t.path + "' names " + in.what + " '" + in.path + "'";
+      }
+    for(const Target& other : m_targets)
+      if((t.exists && other.exists && t.device == other.device && t.inode == other.inode) ||
+         t.canonical == other.canonical)
+      {
+        usage = true;
+        return t.what + " '" + t.path + "' and " + other.what + " '" + other.path + "' name the same file";
+      }
+    return std::string();
+  }
+
+  // the first step of publish(): hard links to the pre-existing targets, kept until every
+  // rename succeeded
+  bool back_up_targets()
+  {
     for(std::size_t k = 0; k < m_targets.size(); ++k)
     {
       Target& t = m_targets[k];
@@ -399,6 +454,13 @@ public:
       t.backup = backup;
       t.backup_by_rename = (::link(t.path.c_str(), backup.c_str()) != 0);
     }
+    return true;
+  }
+
+  // the second step of publish(): every temporary file renamed to its target, or, on a
+  // failure, the targets renamed before put back
+  bool rename_targets()
+  {
     for(std::size_t k = 0; k < m_targets.size(); ++k)
     {
       Target& t = m_targets[k];
@@ -424,34 +486,8 @@ public:
       forget(t.temporary);
       t.published = true;
     }
-    for(Target& t : m_targets)
-      if(!t.backup.empty())
-      {
-        ::unlink(t.backup.c_str());
-        forget(t.backup);
-      }
-    m_targets.clear();
     return true;
   }
-
-  /// the message of the last failure
-  const std::string& error() const { return m_error; }
-
-private:
-  struct Named
-  {
-    std::string path, what;
-    bool exists = false;
-    dev_t device = 0;
-    ino_t inode = 0;
-  };
-  struct Target : Named
-  {
-    std::filesystem::path canonical;
-    std::string temporary, backup;
-    Buffered_writer writer;
-    bool written = false, published = false, backup_by_rename = false;
-  };
 
   // the absolute path with the links of its existing part resolved, '.' and '..' removed
   static std::filesystem::path canonical(const std::string& path)
