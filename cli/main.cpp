@@ -45,10 +45,6 @@
 #include <iostream>
 #include <string>
 
-#ifndef MBP_DEFAULT_MESH
-#define MBP_DEFAULT_MESH ""
-#endif
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -174,7 +170,7 @@ void print_notes(const Run_facts& f)
 
 int main(int argc, char** argv)
 {
-  const std::string default_mesh = MBP_DEFAULT_MESH;
+  const std::string default_mesh = mbp_cli::default_mesh;
   Options options;
   const std::string usage_problem = parse_options(argc, argv, options);
   if(!usage_problem.empty())

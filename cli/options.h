@@ -59,6 +59,9 @@ struct Options
 const std::vector<std::string>& geodesic_methods();
 bool is_geodesic_method(const std::string& name);
 
+/// the program's default mesh: a path, or empty when none was configured (default_mesh.cpp)
+extern const char* const default_mesh;
+
 /// the help text (`--help`)
 std::string usage(const std::string& default_mesh);
 
