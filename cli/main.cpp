@@ -83,7 +83,7 @@ int usage_error(const std::string& error, int argc, char** argv)
 
 // Without INPUT: the default mesh, or the generated curved disk when that file is missing
 // (then true).
-bool generate_without_default_mesh(Options& options, const std::string& default_mesh, Run& run)
+bool resolve_default_input(Options& options, const std::string& default_mesh, Run& run)
 {
   std::error_code ec;
   if(!options.input.empty())
@@ -184,7 +184,7 @@ int main(int argc, char** argv)
   // the input, the output names, then the mesh
   Run run;
   Clock::time_point start = Clock::now();
-  const bool generated = generate_without_default_mesh(options, default_mesh, run);
+  const bool generated = resolve_default_input(options, default_mesh, run);
   Output_files files;
   bool usage = false;
   const std::string output_problem = check_outputs(options, generated, files, usage);
