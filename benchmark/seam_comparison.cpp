@@ -14,8 +14,8 @@
 //   seam_comparison [--meshes=DIR] [--bff=PROGRAM] [--only=NAME] [--sweep] [--work=DIR]
 //                   [--border=conformal|automatic]
 //
-// The cut mesh is flattened by Measured_conformal_parameterizer_3 with the conformal border
-// (BFF's border with scale factor 0 on the border; default) or the automatic border.
+// The cut mesh is flattened by Conformal_parameterizer_3 with the conformal border (BFF's border
+// with scale factor 0 on the border; default) or the automatic border.
 // Meshes: the rows of DIR/PROVENANCE.md (default: ../shared/data/meshes, as configured) of the
 // classes CLOSED, HOLES, OPEN g>0 (flattened) and MESSY (they must get a named error).
 // --sweep: instead, on the closed meshes of genus 0, the figures for 2 to 16 cones (the
@@ -44,10 +44,11 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Seam_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
-#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/compute_disk_seams.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
@@ -86,10 +87,16 @@ typedef boost::graph_traits<Mesh>::face_descriptor                   face_descri
 typedef Mesh::Property_map<edge_descriptor, bool>                    Seam_edge_map;
 typedef Mesh::Property_map<vertex_descriptor, bool>                  Seam_vertex_map;
 typedef CGAL::Seam_mesh<Mesh, Seam_edge_map, Seam_vertex_map>        Seam_mesh;
-typedef SMP::Measured_conformal_parameterizer_3<Seam_mesh>           Parameterizer;
 typedef std::chrono::steady_clock                                    Clock;
 
 namespace {
+
+// The border policy of the flattening (--border=): Conformal_border or Automatic_border<>.
+enum class Border
+{
+  conformal,
+  automatic
+};
 
 double seconds_since(Clock::time_point start)
 {
@@ -153,35 +160,37 @@ double total_area(const Mesh& mesh)
 
 // ---------------------------------------------------------------- ours
 
-Figures run_ours(Mesh& mesh, const SMP::Disk_seams_options& options, Parameterizer::Border_choice border)
+// The flattening of the cut mesh from its longest border with the border policy `border`.
+template <class UVmap>
+SMP::Error_code flatten(Seam_mesh& sm, Border border, UVmap uv)
+{
+  const auto bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  if(border == Border::automatic)
+    return SMP::parameterize(sm, SMP::Conformal_parameterizer_3<Seam_mesh, SMP::Automatic_border<> >(), bhd, uv);
+  return SMP::parameterize(sm, SMP::Conformal_parameterizer_3<Seam_mesh, SMP::Conformal_border>(), bhd, uv);
+}
+
+Figures run_ours(Mesh& mesh, const SMP::Disk_seams_options& options, Border border)
 {
   Figures f;
   const Clock::time_point start = Clock::now();
   Seam_edge_map seam_edges = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
   Seam_vertex_map seam_vertices = mesh.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
-  SMP::Disk_seams_report<Mesh> seams;
-  const SMP::Error_code status = SMP::compute_disk_seams(mesh, seam_edges, seam_vertices, seams, options);
-  if(status != SMP::OK)
-  {
+  SMP::Disk_seams_report seams;
+  if(SMP::compute_disk_seams(mesh, seam_edges, seam_vertices, options, &seams) != SMP::OK)
     f.error = SMP::disk_seams_problem_message(seams.problem);
-    mesh.remove_property_map(seam_edges);
-    mesh.remove_property_map(seam_vertices);
-    return f;
-  }
-  f.seam_edges = seams.number_of_seam_edges;
-  f.seam_length = seams.seam_length / std::sqrt(total_area(mesh));
-  f.cones = static_cast<int>(seams.cones.size());
+  else
   {
+    f.seam_edges = seams.number_of_seam_edges;
+    f.seam_length = seams.seam_length / std::sqrt(total_area(mesh));
+    f.cones = static_cast<int>(seams.cones.size());
     Seam_mesh sm(mesh, seam_edges, seam_vertices);
     sm.set_seam_edges_number(seams.number_of_seam_edges);
-    const auto bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
     auto uv = get(CGAL::dynamic_vertex_property_t<K::Point_2>(), sm);
-    Parameterizer parameterizer;
-    parameterizer.set_border_choice(border);
-    const SMP::Error_code s = SMP::parameterize(sm, parameterizer, bhd, uv);
+    const SMP::Error_code status = flatten(sm, border, uv);
     f.seconds = seconds_since(start);
-    if(s != SMP::OK)
-      f.error = SMP::get_measured_error_message(s);
+    if(status != SMP::OK)
+      f.error = SMP::get_measured_error_message(status);
     else
       measure(sm, uv, f);
   }
@@ -221,64 +230,71 @@ struct Bff_output
   std::set<std::pair<std::size_t, std::size_t> > cut_edges;
 };
 
-std::string read_bff_obj(const std::string& path, Bff_output& out)
+// The parts of an OBJ file that BFF writes: points, UVs, and faces as (v, vt) per corner.
+struct Obj_file
+{
+  std::vector<K::Point_3> points;
+  std::vector<K::Point_2> uv;
+  std::vector<std::vector<std::pair<std::size_t, std::size_t> > > faces;
+};
+
+// The corners "v/vt" of an 'f' line (0-based); an error message, or empty.
+std::string read_face_corners(std::istringstream& ls, Obj_file& obj)
+{
+  obj.faces.emplace_back();
+  for(std::string corner; ls >> corner;)
+  {
+    std::size_t v = 0, t = 0;
+    if(std::sscanf(corner.c_str(), "%zu/%zu", &v, &t) != 2 || v == 0 || t == 0 || v > obj.points.size() ||
+       t > obj.uv.size())
+      return "unreadable face corner '" + corner + "'";
+    obj.faces.back().emplace_back(v - 1, t - 1);
+  }
+  return std::string();
+}
+
+std::string read_obj(const std::string& path, Obj_file& obj)
 {
   std::ifstream in(path);
   if(!in)
     return "no output";
-  std::vector<K::Point_3> points;
-  std::vector<std::vector<std::pair<std::size_t, std::size_t> > > faces;  // (v, vt) per corner
   for(std::string line; std::getline(in, line);)
   {
     std::istringstream ls(line);
     std::string tag;
     ls >> tag;
+    double x = 0., y = 0., z = 0.;
     if(tag == "v")
     {
-      double x, y, z;
       ls >> x >> y >> z;
-      points.emplace_back(x, y, z);
+      obj.points.emplace_back(x, y, z);
     }
     else if(tag == "vt")
     {
-      double u, v;
-      ls >> u >> v;
-      out.uv.emplace_back(u, v);
+      ls >> x >> y;
+      obj.uv.emplace_back(x, y);
     }
     else if(tag == "f")
     {
-      faces.emplace_back();
-      for(std::string corner; ls >> corner;)
-      {
-        std::size_t v = 0, t = 0;
-        if(std::sscanf(corner.c_str(), "%zu/%zu", &v, &t) != 2 || v == 0 || t == 0 || v > points.size() ||
-           t > out.uv.size())
-          return "unreadable face corner '" + corner + "'";
-        faces.back().emplace_back(v - 1, t - 1);
-      }
+      const std::string error = read_face_corners(ls, obj);
+      if(!error.empty())
+        return error;
     }
   }
-  std::vector<std::size_t> point_of(out.uv.size(), std::size_t(-1));
-  for(const auto& f : faces)
-    for(const auto& c : f)
-      point_of[c.second] = c.first;
-  std::vector<vertex_descriptor> vertex(out.uv.size());
-  for(std::size_t t = 0; t < out.uv.size(); ++t)
-    vertex[t] = out.mesh.add_vertex(point_of[t] < points.size() ? points[point_of[t]] : K::Point_3(0, 0, 0));
+  return std::string();
+}
+
+// The cut: the border edges of the UV mesh whose input edge has two faces, as pairs of input
+// vertices.
+void find_cut_edges(const Obj_file& obj, const std::vector<std::size_t>& point_of, Bff_output& out)
+{
   std::map<std::pair<std::size_t, std::size_t>, int> input_edge_uses;  // per input edge
-  for(const auto& f : faces)
-  {
-    if(f.size() != 3)
-      return "a face is not a triangle";
-    if(out.mesh.add_face(vertex[f[0].second], vertex[f[1].second], vertex[f[2].second]) == Mesh::null_face())
-      return "the UV mesh is not manifold";
-    for(int k = 0; k < 3; ++k)
+  for(const auto& f : obj.faces)
+    for(std::size_t k = 0; k < 3; ++k)
     {
-      const std::size_t a = f[std::size_t(k)].first, b = f[std::size_t((k + 1) % 3)].first;
+      const std::size_t a = f[k].first, b = f[(k + 1) % 3].first;
       ++input_edge_uses[std::make_pair((std::min)(a, b), (std::max)(a, b))];
     }
-  }
-  // the cut: border edges of the UV mesh whose input edge has two faces
   for(halfedge_descriptor h : halfedges(out.mesh))
     if(is_border(h, out.mesh))
     {
@@ -287,6 +303,31 @@ std::string read_bff_obj(const std::string& path, Bff_output& out)
       if(input_edge_uses[key] == 2)
         out.cut_edges.insert(key);
     }
+}
+
+// BFF's output OBJ as a mesh with one vertex per 'vt' (see Bff_output).
+std::string read_bff_obj(const std::string& path, Bff_output& out)
+{
+  Obj_file obj;
+  const std::string error = read_obj(path, obj);
+  if(!error.empty())
+    return error;
+  out.uv = obj.uv;
+  std::vector<std::size_t> point_of(obj.uv.size(), std::size_t(-1));
+  for(const auto& f : obj.faces)
+    for(const auto& c : f)
+      point_of[c.second] = c.first;
+  std::vector<vertex_descriptor> vertex(obj.uv.size());
+  for(std::size_t t = 0; t < obj.uv.size(); ++t)
+    vertex[t] = out.mesh.add_vertex(point_of[t] < obj.points.size() ? obj.points[point_of[t]] : K::Point_3(0, 0, 0));
+  for(const auto& f : obj.faces)
+  {
+    if(f.size() != 3)
+      return "a face is not a triangle";
+    if(out.mesh.add_face(vertex[f[0].second], vertex[f[1].second], vertex[f[2].second]) == Mesh::null_face())
+      return "the UV mesh is not manifold";
+  }
+  find_cut_edges(obj, point_of, out);
   return std::string();
 }
 
@@ -398,69 +439,95 @@ struct Arguments
   std::string meshes = MBP_MESH_DIR, bff = MBP_BFF_PROGRAM, only;
   fs::path work = fs::temp_directory_path() / "mbp_seam_comparison";
   bool sweep = false;
-  Parameterizer::Border_choice border = Parameterizer::CONFORMAL_BORDER;
+  Border border = Border::conformal;
 };
+
+// The figures of the flattened meshes (holes joined), for the medians.
+struct Column
+{
+  std::vector<double> area, angle, length, time;
+
+  void add(const Figures& f)
+  {
+    area.push_back(f.area);
+    angle.push_back(f.angle);
+    length.push_back(f.seam_length);
+    time.push_back(f.seconds);
+  }
+};
+
+struct Medians
+{
+  Column ours, bff;
+  std::vector<double> ratio;  // of the areas, ours / BFF
+};
+
+// The option sets a mesh is cut with: the defaults, and for a mesh with holes also the holes
+// kept for the virtual filling.
+std::vector<std::pair<std::string, SMP::Disk_seams_options> > variants_of(const Entry& e)
+{
+  const bool holes = e.mesh_class.rfind("HOLES", 0) == 0;
+  std::vector<std::pair<std::string, SMP::Disk_seams_options> > variants(1);
+  variants[0].first = holes ? "holes joined" : "";
+  if(holes)
+  {
+    variants.emplace_back("virtual filling", SMP::Disk_seams_options());
+    variants.back().second.join_holes = false;
+  }
+  return variants;
+}
+
+// The rows of one mesh: ours and BFF's figures for each option set.
+void compare_mesh(const Arguments& args, const Entry& e, Mesh& mesh, Medians& medians)
+{
+  const bool with_bff = !args.bff.empty() && fs::exists(args.bff);
+  const bool messy = e.mesh_class.rfind("MESSY", 0) == 0;
+  for(const auto& variant : variants_of(e))
+  {
+    const Figures ours = run_ours(mesh, variant.second, args.border);
+    std::cout << "| " << e.name << (variant.first.empty() ? "" : " (" + variant.first + ")") << " | "
+              << e.mesh_class << " | " << num_vertices(mesh) << " | " << cells(ours) << " | ";
+    Figures bff;
+    if(with_bff && ours.error.empty())
+    {
+      bff = run_bff(mesh, ours.cones, args.bff, args.work, fs::path(e.name).stem().string());
+      std::cout << cells(bff) << " |\n";
+    }
+    else
+      std::cout << (messy ? "not run (input error)" : "not run") << " | | | | | |\n";
+    if(messy || !ours.error.empty() || variant.first == "virtual filling")
+      continue;
+    medians.ours.add(ours);
+    if(with_bff && bff.error.empty())
+    {
+      medians.bff.add(bff);
+      medians.ratio.push_back(ours.area / bff.area);
+    }
+  }
+}
 
 int comparison(const Arguments& args)
 {
-  const bool with_bff = !args.bff.empty() && fs::exists(args.bff);
   std::cout << "| mesh | class | V | ours: cones | seam length | angle | area | flips / overlap | time (s) |"
             << " BFF: cones | seam length | angle | area | flips / overlap | time (s) |\n"
             << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  std::vector<double> ours_area, bff_area, ratio, ours_angle, bff_angle, ours_length, bff_length, ours_time, bff_time;
+  Medians m;
   for(const Entry& e : provenance(args.meshes, {"CLOSED", "HOLES", "OPEN g", "MESSY"}))
   {
     if(!args.only.empty() && e.name != args.only)
       continue;
     Mesh mesh;
-    if(!read(args.meshes + "/" + e.name, mesh))
-    {
+    if(read(args.meshes + "/" + e.name, mesh))
+      compare_mesh(args, e, mesh, m);
+    else
       std::cout << "| " << e.name << " | " << e.mesh_class << " | | not readable as a polygon mesh |\n";
-      continue;
-    }
-    const bool holes = e.mesh_class.rfind("HOLES", 0) == 0, messy = e.mesh_class.rfind("MESSY", 0) == 0;
-    std::vector<std::pair<std::string, SMP::Disk_seams_options> > variants(1);
-    variants[0].first = holes ? "holes joined" : "";
-    if(holes)
-    {
-      variants.emplace_back("virtual filling", SMP::Disk_seams_options());
-      variants.back().second.join_holes = false;
-    }
-    for(const auto& variant : variants)
-    {
-      const Figures ours = run_ours(mesh, variant.second, args.border);
-      std::cout << "| " << e.name << (variant.first.empty() ? "" : " (" + variant.first + ")") << " | "
-                << e.mesh_class << " | " << num_vertices(mesh) << " | " << cells(ours) << " | ";
-      Figures bff;
-      if(with_bff && ours.error.empty())
-      {
-        bff = run_bff(mesh, ours.cones, args.bff, args.work, fs::path(e.name).stem().string());
-        std::cout << cells(bff) << " |\n";
-      }
-      else
-        std::cout << (messy ? "not run (input error)" : "not run") << " | | | | | |\n";
-      if(messy || !ours.error.empty() || variant.first == "virtual filling")
-        continue;
-      ours_area.push_back(ours.area);
-      ours_angle.push_back(ours.angle);
-      ours_length.push_back(ours.seam_length);
-      ours_time.push_back(ours.seconds);
-      if(with_bff && bff.error.empty())
-      {
-        bff_area.push_back(bff.area);
-        bff_angle.push_back(bff.angle);
-        bff_length.push_back(bff.seam_length);
-        bff_time.push_back(bff.seconds);
-        ratio.push_back(ours.area / bff.area);
-      }
-    }
   }
-  std::cout << "\nMedians over the flattened meshes (holes joined): ours: area " << number(median(ours_area))
-            << ", angle " << number(median(ours_angle)) << ", seam length " << number(median(ours_length))
-            << ", time " << number(median(ours_time), 2) << " s; BFF: area " << number(median(bff_area)) << ", angle "
-            << number(median(bff_angle)) << ", seam length " << number(median(bff_length)) << ", time "
-            << number(median(bff_time), 2) << " s; median of the area ratio ours/BFF " << number(median(ratio))
-            << "\n";
+  std::cout << "\nMedians over the flattened meshes (holes joined): ours: area " << number(median(m.ours.area))
+            << ", angle " << number(median(m.ours.angle)) << ", seam length " << number(median(m.ours.length))
+            << ", time " << number(median(m.ours.time), 2) << " s; BFF: area " << number(median(m.bff.area))
+            << ", angle " << number(median(m.bff.angle)) << ", seam length " << number(median(m.bff.length))
+            << ", time " << number(median(m.bff.time), 2) << " s; median of the area ratio ours/BFF "
+            << number(median(m.ratio)) << "\n";
   return EXIT_SUCCESS;
 }
 
@@ -516,9 +583,9 @@ int main(int argc, char** argv)
     else if(!value("--work=").empty())
       args.work = value("--work=");
     else if(a == "--border=automatic")
-      args.border = Parameterizer::AUTOMATIC_BORDER;
+      args.border = Border::automatic;
     else if(a == "--border=conformal")
-      args.border = Parameterizer::CONFORMAL_BORDER;
+      args.border = Border::conformal;
     else
     {
       std::cerr << "usage: seam_comparison [--meshes=DIR] [--bff=PROGRAM] [--only=NAME] [--sweep] [--work=DIR]"

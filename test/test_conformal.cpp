@@ -7,9 +7,10 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// Measured_conformal_parameterizer_3: equality with CGAL's DCP plugged with the measured
-// border, the shared factorization (2 factorizations, 4 back-substitutions), the grounded
-// spring Laplacian, concurrency, solvers, generic meshes, bad input, and the automatic border.
+// Conformal_parameterizer_3 with the measured border (Measured_conformal_parameterizer_3):
+// equality with CGAL's DCP plugged with the measured border, the shared factorization
+// (2 factorizations, 4 back-substitutions), the grounded spring Laplacian, concurrency,
+// solvers, generic meshes, bad input; and with the automatic border (Automatic_border).
 
 #define BOOST_TEST_MODULE conformal
 #include <boost/test/unit_test.hpp>
@@ -26,12 +27,16 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <CGAL/Surface_mesh_parameterization/Conformal_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/poisson_distance.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/poisson_distance.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 #ifdef MBP_WITH_CHOLMOD
 #include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
@@ -57,6 +62,11 @@ typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<doub
 typedef SMP::Measured_conformal_parameterizer_3<Mesh>           Conformal;
 typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default, CGAL::Default,
                                                 CGAL::Parallel_tag> Conformal_parallel;
+// the automatic border, with the Poisson policies for its measured member
+typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<> > Automatic;
+typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<>, CGAL::Default, CGAL::Parallel_tag>
+  Automatic_parallel;
+typedef SMP::Parameterization_report                            Report;
 
 namespace {
 
@@ -130,8 +140,8 @@ BOOST_AUTO_TEST_CASE(two_factorizations_and_four_back_substitutions)
   Mesh m = make(mbp_test::bumpy_disk());
   UV_map uv = new_uv(m, "v:uv");
   Conformal conformal;
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, mbp_test::longest_border(m), uv), SMP::OK);
-  const Conformal::Report& r = conformal.last_report();
+  Report r;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, mbp_test::longest_border(m), uv, &r), SMP::OK);
   BOOST_TEST(r.status == SMP::OK);
   BOOST_TEST(r.statistics.factorizations == 2);      // L_II, and the spring Laplacian
   BOOST_TEST(r.statistics.back_substitutions == 4);  // BPDM, PDM, u, v
@@ -145,16 +155,29 @@ BOOST_AUTO_TEST_CASE(two_factorizations_and_four_back_substitutions)
   }
   BOOST_TEST(r.preparation_seconds + r.center_seconds + r.distance_seconds + r.border_map_seconds +
              r.interior_seconds + r.output_seconds <= r.total_seconds * (1. + 1e-9));
-  BOOST_TEST(conformal.center() == conformal.border_parameterizer().center());
-  BOOST_TEST(!is_border(conformal.center(), m));
+  // the center is the drop-in measured border parameterizer's
+  Report border_report;
+  {
+    UV_map b = new_uv(m, "v:border");
+    auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
+    auto vimap = m.add_property_map<vertex_descriptor, int>("v:i", 0).first;
+    SMP::Measured_border_parameterizer_3<Mesh> border;
+    BOOST_REQUIRE_EQUAL(border.parameterize(m, mbp_test::longest_border(m), b, vimap, done, &border_report), SMP::OK);
+  }
+  BOOST_REQUIRE(r.has_center);
+  BOOST_REQUIRE(border_report.has_center);
+  BOOST_TEST(r.center == border_report.center);
+  BOOST_TEST(!is_border(vertex_descriptor(Mesh::size_type(r.center)), m));
 
   // with a user center, L_II serves only the interior: still 2 factorizations, 3 solves
-  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh> > fixed{
-    SMP::Fixed_center<Mesh>(vertex_descriptor(17))};
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, fixed, mbp_test::longest_border(m), uv), SMP::OK);
-  BOOST_TEST(fixed.last_report().statistics.factorizations == 2);
-  BOOST_TEST(fixed.last_report().statistics.back_substitutions == 3);
-  BOOST_TEST(fixed.center() == vertex_descriptor(17));
+  typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh> > Fixed;
+  Fixed fixed{Fixed::Border_policy(SMP::Fixed_center<Mesh>(vertex_descriptor(17)))};
+  Report fixed_report;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, fixed, mbp_test::longest_border(m), uv, &fixed_report), SMP::OK);
+  BOOST_TEST(fixed_report.statistics.factorizations == 2);
+  BOOST_TEST(fixed_report.statistics.back_substitutions == 3);
+  BOOST_REQUIRE(fixed_report.has_center);
+  BOOST_TEST(vertex_descriptor(Mesh::size_type(fixed_report.center)) == vertex_descriptor(17));
 }
 
 BOOST_AUTO_TEST_CASE(grounded_spring_laplacian_gives_the_poisson_distance_map)
@@ -165,11 +188,12 @@ BOOST_AUTO_TEST_CASE(grounded_spring_laplacian_gives_the_poisson_distance_map)
   for(const mbp_test::Soup& soup : {mbp_test::bumpy_disk(), mbp_test::l_shape()})
   {
     Mesh m = make(soup);
-    SMP::Parameterization_patch_3<Mesh> patch;
+    SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> patch;
     BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
     BOOST_REQUIRE_EQUAL(patch.factorize_spring_laplacian(1.), SMP::OK);
     const std::size_t n = patch.number_of_vertices();
-    for(std::size_t s : {patch.spring_ground(), std::size_t(0), n / 3, n - 1})
+    const std::size_t ground = static_cast<std::size_t>(patch.border().front());  // the spring system's ground
+    for(std::size_t s : {ground, std::size_t(0), n / 3, n - 1})
       for(double r : {1., 2.})
       {
         std::vector<double> grounded, direct;
@@ -196,9 +220,11 @@ MBP_TIERED_TEST_CASE(concurrency_does_not_change_the_result)
     UV_map a = new_uv(m, "v:a"), b = new_uv(m, "v:b");
     Conformal_parallel concurrent;  // CGAL::Parallel_tag: the spring factorization in a second thread
     Conformal sequential;
-    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, concurrent, mbp_test::longest_border(m), a), SMP::OK);
-    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, sequential, mbp_test::longest_border(m), b), SMP::OK);
-    BOOST_TEST(concurrent.center() == sequential.center());
+    Report ra, rb;
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, concurrent, mbp_test::longest_border(m), a, &ra), SMP::OK);
+    BOOST_REQUIRE_EQUAL(SMP::parameterize(m, sequential, mbp_test::longest_border(m), b, &rb), SMP::OK);
+    BOOST_TEST(ra.has_center);
+    BOOST_TEST(ra.center == rb.center);
     BOOST_TEST(relative_difference(m, a, b) == 0.);
   }
 }
@@ -208,20 +234,21 @@ MBP_TIERED_TEST_CASE(every_solver_gives_the_same_parameterization)
   Mesh m = read(tier, real_meshes(tier)[0]);
   UV_map ldlt = new_uv(m, "v:ldlt");
   Conformal a;
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, a, mbp_test::longest_border(m), ldlt), SMP::OK);
+  Report ra;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, a, mbp_test::longest_border(m), ldlt, &ra), SMP::OK);
   // the paper's method with the solver traits of `solver`: the same center and map as LDLT
   auto same_as_ldlt = [&](auto solver, const std::string& name) {
-    typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
-                                                    SMP::Poisson_border_distance<Mesh>, decltype(solver)> Other;
-    (void)solver;  // only its type is used
+    typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator,
+                                                    SMP::Poisson_border_distance, decltype(solver)> Other;
     BOOST_TEST_CONTEXT(name)
     {
       UV_map uv = new_uv(m, "v:" + name);
-      Other other;
-      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, other, mbp_test::longest_border(m), uv), SMP::OK);
-      BOOST_TEST(a.center() == other.center());
+      Other other(typename Other::Border_policy(), solver);  // the traits object is passed in
+      Report r;
+      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, other, mbp_test::longest_border(m), uv, &r), SMP::OK);
+      BOOST_TEST(ra.center == r.center);
       BOOST_TEST(relative_difference(m, uv, ldlt) <= 1e-9);
-      BOOST_TEST(other.last_report().statistics.factorizations == 2);
+      BOOST_TEST(r.statistics.factorizations == 2);
     }
   };
   same_as_ldlt(LU(), "lu");
@@ -357,8 +384,9 @@ BOOST_AUTO_TEST_CASE(bad_input_writes_nothing)
     auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
     auto vimap = m.add_property_map<vertex_descriptor, int>("v:i", 0).first;
     Conformal conformal;
-    BOOST_TEST(conformal.parameterize(m, bhd, uv, vimap, done) == code);
-    BOOST_TEST(conformal.last_report().status == code);
+    Report report;
+    BOOST_TEST(conformal.parameterize(m, bhd, uv, vimap, done, &report) == code);
+    BOOST_TEST(report.status == code);
     for(vertex_descriptor v : vertices(m))
     {
       BOOST_TEST(uv[v] == K::Point_2(-7, -7));
@@ -384,8 +412,8 @@ BOOST_AUTO_TEST_CASE(bad_input_writes_nothing)
     Mesh m = make(mbp_test::bumpy_disk());
     const auto bhd = mbp_test::longest_border(m);
     UV_map uv = new_uv(m, "v:uv");
-    SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh> > fixed{
-      SMP::Fixed_center<Mesh>(source(bhd, m))};
+    typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh> > Fixed;
+    Fixed fixed{Fixed::Border_policy(SMP::Fixed_center<Mesh>(source(bhd, m)))};
     BOOST_TEST(SMP::parameterize(m, fixed, bhd, uv) == SMP::ERROR_WRONG_PARAMETER);
     for(vertex_descriptor v : vertices(m))
       BOOST_TEST(uv[v] == K::Point_2(-7, -7));
@@ -396,18 +424,14 @@ BOOST_AUTO_TEST_CASE(bad_input_writes_nothing)
 
 namespace {
 
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
-                                                SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics> >
-  Conformal_fm;
-
-// The angle distortion of the measured parameterization with `p` (no repair), or +infinity
-// when it is not one-to-one.
+// The angle distortion of the parameterization with the border policy of `p` without repair,
+// or +infinity when it is not one-to-one.
 template <class Parameterizer>
-double unrepaired_angle_distortion(Mesh& m, Parameterizer p, const std::string& name)
+double unrepaired_angle_distortion(Mesh& m, const Parameterizer& p, const std::string& name)
 {
   UV_map uv = new_uv(m, name);
-  p.set_repair(Parameterizer::NO_REPAIR);
-  const SMP::Error_code status = SMP::parameterize(m, p, mbp_test::longest_border(m), uv);
+  const Parameterizer unrepaired(p.border_policy(), p.solver_traits(), SMP::NO_REPAIR);
+  const SMP::Error_code status = SMP::parameterize(m, unrepaired, mbp_test::longest_border(m), uv);
   BOOST_TEST((status == SMP::OK || status == SMP::ERROR_NO_1_TO_1_MAPPING), name << ": " << status);
   return status == SMP::OK ? SMP::measure_quality(m, faces(m), uv).angle_distortion
                            : std::numeric_limits<double>::infinity();
@@ -430,10 +454,9 @@ MBP_TIERED_TEST_CASE(automatic_border_is_never_worse_than_its_members)
     {
       Mesh m = read(tier, name);
       UV_map uv = new_uv(m, "v:auto"), circle_uv = new_uv(m, "v:circle");
-      Conformal automatic;
-      automatic.set_border_choice(Conformal::AUTOMATIC_BORDER);
-      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv), SMP::OK);
-      const Conformal::Report& report = automatic.last_report();
+      Automatic automatic;
+      Report report;
+      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv, &report), SMP::OK);
       const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
       BOOST_TEST(q.flipped_faces == 0u);
       BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
@@ -446,10 +469,12 @@ MBP_TIERED_TEST_CASE(automatic_border_is_never_worse_than_its_members)
       const double circle = SMP::measure_quality(m, faces(m), circle_uv).angle_distortion;
       const double poisson = unrepaired_angle_distortion(m, Conformal(), "v:poisson");
       UV_map conformal_uv = new_uv(m, "v:conformal");
-      SMP::Conformal_border_parameterizer_3<Mesh> conformal_border;
-      SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Conformal_border_parameterizer_3<Mesh>, LU>
-        conformal_dcp(conformal_border);
+      typedef mbp_test::Reporting_border<SMP::Conformal_border_parameterizer_3<Mesh> > Reporting_conformal_border;
+      Report conformal_border;  // the report of the border step inside CGAL's DCP
+      SMP::Discrete_conformal_map_parameterizer_3<Mesh, Reporting_conformal_border, LU> conformal_dcp(
+        Reporting_conformal_border{&conformal_border});
       BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal_dcp, mbp_test::longest_border(m), conformal_uv), SMP::OK);
+      BOOST_REQUIRE(conformal_border.status == SMP::OK);
       const double conformal = SMP::is_one_to_one_uv_map(m, faces(m), conformal_uv)
                                  ? SMP::measure_quality(m, faces(m), conformal_uv).angle_distortion
                                  : std::numeric_limits<double>::infinity();
@@ -468,23 +493,23 @@ MBP_TIERED_TEST_CASE(automatic_border_is_never_worse_than_its_members)
       BOOST_REQUIRE(report.chosen_candidate >= 0);
       int members = 0;
       double best = std::numeric_limits<double>::infinity();
-      for(const Conformal::Border_candidate& c : report.border_candidates)
+      for(const SMP::Border_candidate& c : report.border_candidates)
       {
         BOOST_TEST((c.valid == std::isfinite(c.objective)));
         if(c.valid)
           best = (std::min)(best, c.objective);
-        if(c.family == Conformal::CIRCLE)
+        if(c.family == SMP::CIRCLE)
         {
           ++members;
           BOOST_TEST(c.valid);
           BOOST_TEST(std::abs(c.objective - circle) <= 1e-7 * circle);
         }
-        if(c.family == Conformal::MEASURED && c.blend == 0.)
+        if(c.family == SMP::MEASURED && c.blend == 0.)
         {
           ++members;
           BOOST_TEST((c.valid ? std::abs(c.objective - poisson) <= 1e-7 * poisson : !std::isfinite(poisson)));
         }
-        if(c.family == Conformal::CONFORMAL && c.blend == conformal_border.last_record().blend)
+        if(c.family == SMP::CONFORMAL && c.blend == conformal_border.conformal_blend)
         {
           ++members;
           BOOST_TEST((c.valid ? std::abs(c.objective - conformal) <= 1e-7 * conformal + 1e-15 : !std::isfinite(conformal)));
@@ -492,7 +517,7 @@ MBP_TIERED_TEST_CASE(automatic_border_is_never_worse_than_its_members)
       }
       // the measured member is built only when the conformal layout is not one-to-one
       BOOST_TEST(members == (std::isfinite(conformal) ? 2 : 3));
-      const Conformal::Border_candidate& kept =
+      const SMP::Border_candidate& kept =
         report.border_candidates[static_cast<std::size_t>(report.chosen_candidate)];
       BOOST_TEST(kept.objective == best);
       BOOST_TEST(std::abs(kept.objective - q.angle_distortion) <= 1e-9 * q.angle_distortion + 1e-15);
@@ -509,8 +534,7 @@ MBP_TIERED_TEST_CASE(automatic_border_finds_the_flat_shape)
   {
     Mesh m = make(mbp_test::polar_disk(8, 32));
     UV_map uv = new_uv(m, "v:uv");
-    Conformal automatic;
-    automatic.set_border_choice(Conformal::AUTOMATIC_BORDER);
+    Automatic automatic;
     BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv), SMP::OK);
     const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
     BOOST_TEST(q.angle_distortion <= 1e-9);
@@ -528,18 +552,18 @@ MBP_TIERED_TEST_CASE(automatic_border_finds_the_flat_shape)
     {
       Mesh& m = named.second;
       UV_map uv = new_uv(m, "v:uv");
-      SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Geodesic_center_locator<Mesh, SMP::Exact_geodesics>,
-                                              SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics> > automatic;
-      automatic.set_border_choice(decltype(automatic)::AUTOMATIC_BORDER);
-      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv), SMP::OK);
+      SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<SMP::Geodesic_center_locator<SMP::Exact_geodesics>,
+                                                                 SMP::Geodesic_border_distance<SMP::Exact_geodesics> > >
+        automatic;
+      Report report;
+      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv, &report), SMP::OK);
       const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
       BOOST_TEST(q.angle_distortion <= 1e-9);
       BOOST_TEST(q.area_distortion_max <= 1e-9);
       BOOST_TEST(std::abs(q.l2_stretch - 1.) <= 1e-9);
-      const auto& report = automatic.last_report();
       BOOST_REQUIRE(report.chosen_candidate >= 0);
       const auto& kept = report.border_candidates[static_cast<std::size_t>(report.chosen_candidate)];
-      BOOST_TEST(kept.blend == ((kept.family == decltype(automatic)::CIRCLE) ? 1. : 0.));
+      BOOST_TEST(kept.blend == ((kept.family == SMP::CIRCLE) ? 1. : 0.));
     }
 }
 
@@ -548,19 +572,17 @@ MBP_TIERED_TEST_CASE(automatic_border_is_deterministic)
   const std::string name = automatic_border_meshes(tier)[1];
   Mesh m = read(tier, name);
   UV_map a = new_uv(m, "v:a"), b = new_uv(m, "v:b"), c = new_uv(m, "v:c");
-  Conformal first, second;
-  Conformal_parallel parallel;  // the parallel variant must give the same
-  for(Conformal* p : {&first, &second})
-    p->set_border_choice(Conformal::AUTOMATIC_BORDER);
-  parallel.set_border_choice(Conformal_parallel::AUTOMATIC_BORDER);
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, first, mbp_test::longest_border(m), a), SMP::OK);
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, second, mbp_test::longest_border(m), b), SMP::OK);
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, parallel, mbp_test::longest_border(m), c), SMP::OK);
+  Automatic first, second;
+  Automatic_parallel parallel;  // the parallel variant must give the same
+  Report first_report, second_report, parallel_report;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, first, mbp_test::longest_border(m), a, &first_report), SMP::OK);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, second, mbp_test::longest_border(m), b, &second_report), SMP::OK);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, parallel, mbp_test::longest_border(m), c, &parallel_report), SMP::OK);
   BOOST_TEST(relative_difference(m, a, b) == 0.);
   BOOST_TEST(relative_difference(m, a, c) == 0.);
-  auto same_report = [&first](const auto& other) {
-    const auto& x = first.last_report().border_candidates;
-    const auto& y = other.last_report().border_candidates;
+  auto same_report = [&first_report](const Report& other) {
+    const auto& x = first_report.border_candidates;
+    const auto& y = other.border_candidates;
     BOOST_REQUIRE_EQUAL(x.size(), y.size());
     for(std::size_t i = 0; i < x.size(); ++i)
     {
@@ -569,10 +591,10 @@ MBP_TIERED_TEST_CASE(automatic_border_is_deterministic)
       BOOST_TEST(x[i].valid == y[i].valid);
       BOOST_TEST(((x[i].objective == y[i].objective) || (!x[i].valid && !y[i].valid)));
     }
-    BOOST_TEST(first.last_report().chosen_candidate == other.last_report().chosen_candidate);
+    BOOST_TEST(first_report.chosen_candidate == other.chosen_candidate);
   };
-  same_report(second);
-  same_report(parallel);
+  same_report(second_report);
+  same_report(parallel_report);
 
   // the same choice through Polyhedron_3
   Poly poly;
@@ -580,10 +602,10 @@ MBP_TIERED_TEST_CASE(automatic_border_is_deterministic)
   typedef boost::graph_traits<Poly>::vertex_descriptor Poly_vertex;
   std::map<Poly_vertex, EPICK::Point_2> storage;
   auto puv = boost::make_assoc_property_map(storage);
-  SMP::Measured_conformal_parameterizer_3<Poly> p;
-  p.set_border_choice(SMP::Measured_conformal_parameterizer_3<Poly>::AUTOMATIC_BORDER);
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(poly, p, mbp_test::longest_border(poly), puv), SMP::OK);
-  BOOST_TEST(p.last_report().chosen_candidate == first.last_report().chosen_candidate);
+  SMP::Conformal_parameterizer_3<Poly, SMP::Automatic_border<> > p;
+  Report poly_report;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(poly, p, mbp_test::longest_border(poly), puv, &poly_report), SMP::OK);
+  BOOST_TEST(poly_report.chosen_candidate == first_report.chosen_candidate);
   std::map<std::array<double, 3>, K::Point_2> by_point;
   for(vertex_descriptor v : vertices(m))
     by_point[{m.point(v).x(), m.point(v).y(), m.point(v).z()}] = a[v];

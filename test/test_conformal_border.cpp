@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// The conformal border (Conformal_border_parameterizer_3, and CONFORMAL_BORDER /
-// AUTOMATIC_BORDER of Measured_conformal_parameterizer_3), against independent computations:
+// The conformal border (Conformal_border_parameterizer_3, and Conformal_parameterizer_3 with
+// Conformal_border / Automatic_border), against independent computations:
 // planar non-star-shaped disks reproduced exactly, a developable patch unrolled exactly, the
 // turning angles recomputed from a dense cotangent Laplacian assembled here, the closing
 // step against a dense solution of its least-squares problem, the sign of the correction,
@@ -33,8 +33,11 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <CGAL/Surface_mesh_parameterization/Conformal_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
-#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/borders/conformal_border.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
 #include <Eigen/Dense>
@@ -57,8 +60,9 @@ typedef boost::graph_traits<Mesh>::vertex_descriptor            vertex_descripto
 typedef boost::graph_traits<Mesh>::halfedge_descriptor          halfedge_descriptor;
 typedef Mesh::Property_map<vertex_descriptor, K::Point_2>       UV_map;
 typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > LU;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh>           Full;
 typedef SMP::Conformal_border_parameterizer_3<Mesh>             Border;
+typedef mbp_test::Reporting_border<Border>                      Reporting_border;
+typedef SMP::Parameterization_report                            Report;
 
 namespace {
 
@@ -193,15 +197,22 @@ double angle_distortion(const Mesh& m, UV_map uv)
   return SMP::measure_quality(m, faces(m), uv).angle_distortion;
 }
 
-// The full parameterizer with a border choice; its UVs in `uv`.
-SMP::Error_code flatten(Mesh& m, Full::Border_choice choice, UV_map uv, Full* out = nullptr)
+// The complete parameterizer with the border policy `BorderPolicy`; its UVs in `uv`, the
+// report of the call in `*report` when given.
+template <class BorderPolicy>
+SMP::Error_code flatten(Mesh& m, UV_map uv, Report* report = nullptr)
 {
-  Full p;
-  p.set_border_choice(choice);
-  const SMP::Error_code status = SMP::parameterize(m, p, mbp_test::longest_border(m), uv);
-  if(out)
-    *out = p;
-  return status;
+  const SMP::Conformal_parameterizer_3<Mesh, BorderPolicy> p;
+  return SMP::parameterize(m, p, mbp_test::longest_border(m), uv, report);
+}
+
+// A report's border polygon as Eigen vectors (what the internal polygon functions take).
+std::vector<Eigen::Vector2d> eigen_polygon(const std::vector<std::array<double, 2> >& uv)
+{
+  std::vector<Eigen::Vector2d> p;
+  for(const auto& q : uv)
+    p.emplace_back(q[0], q[1]);
+  return p;
 }
 
 // The turning angles k - L_BI L_II^-1 Omega computed here from a dense cotangent Laplacian.
@@ -289,7 +300,7 @@ BOOST_AUTO_TEST_CASE(planar_non_star_shaped_disks_are_reproduced_exactly)
     orient_ccw(soup);
     Mesh m = make(soup);
     UV_map conformal = new_uv(m, "v:conformal"), circle = new_uv(m, "v:circle"), measured = new_uv(m, "v:measured");
-    BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, conformal), SMP::OK);
+    BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, conformal), SMP::OK);
     const double e = similarity_error(m, conformal, xy(soup));
     BOOST_TEST_MESSAGE(named.first << ": conformal border, distance to the input after alignment " << e);
     BOOST_TEST_CONTEXT(named.first) { BOOST_TEST(e <= 1e-8); }
@@ -298,12 +309,13 @@ BOOST_AUTO_TEST_CASE(planar_non_star_shaped_disks_are_reproduced_exactly)
     UV_map b = new_uv(m, "v:border");
     auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
     auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
-    BOOST_REQUIRE_EQUAL(border.parameterize(m, mbp_test::longest_border(m), b, vim, vpm), SMP::OK);
-    BOOST_TEST(border.last_record().blend == 0.);
+    Report r;
+    BOOST_REQUIRE_EQUAL(border.parameterize(m, mbp_test::longest_border(m), b, vim, vpm, &r), SMP::OK);
+    BOOST_TEST(r.conformal_blend == 0.);
     BOOST_TEST(!border.is_border_convex());
     // the circle and the measured border cannot reproduce it
-    flatten(m, Full::CIRCULAR_BORDER, circle);
-    flatten(m, Full::MEASURED_BORDER, measured);
+    flatten<SMP::Circular_border>(m, circle);
+    flatten<SMP::Measured_border<> >(m, measured);
     BOOST_TEST(similarity_error(m, circle, xy(soup)) > 1e-3);
     BOOST_TEST(similarity_error(m, measured, xy(soup)) > 1e-3);
   }
@@ -318,12 +330,12 @@ BOOST_AUTO_TEST_CASE(a_developable_patch_is_unrolled_exactly)
     height = (std::max)(height, m.point(v).z());
   BOOST_TEST(height > 0.5);
   UV_map uv = new_uv(m, "v:uv"), circle = new_uv(m, "v:circle");
-  BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, uv), SMP::OK);
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, uv), SMP::OK);
   const double e = similarity_error(m, uv, planar);
   BOOST_TEST_MESSAGE("rolled C-shape: distance to the unrolled shape " << e);
   BOOST_TEST(e <= 1e-8);
   BOOST_TEST(angle_distortion(m, uv) <= 1e-12);
-  flatten(m, Full::CIRCULAR_BORDER, circle);
+  flatten<SMP::Circular_border>(m, circle);
   BOOST_TEST(similarity_error(m, circle, planar) > 1e-3);
 }
 
@@ -335,10 +347,15 @@ BOOST_AUTO_TEST_CASE(turning_angles_closing_and_lengths_against_dense_computatio
   UV_map uv = new_uv(m, "v:uv");
   auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
-  BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, uv, vim, vpm), SMP::OK);
-  const Border::Record& r = border.last_record();
-  const std::size_t mb = r.border_vertices.size();
+  Report r;
+  BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, uv, vim, vpm, &r), SMP::OK);
+  const std::vector<vertex_descriptor> loop = mbp_test::border_loop_vertices(m, bhd);
+  const std::size_t mb = loop.size();
   BOOST_REQUIRE_EQUAL(r.turning_angles.size(), mb);
+  BOOST_REQUIRE_EQUAL(r.corrections.size(), mb);
+  BOOST_REQUIRE_EQUAL(r.edge_lengths.size(), mb);
+  BOOST_REQUIRE_EQUAL(r.closed_lengths.size(), mb);
+  BOOST_REQUIRE_EQUAL(r.border_uv.size(), mb);
 
   // the turning angles: a dense cotangent Laplacian and a dense solve, assembled here
   const std::vector<double> dense = dense_turning_angles(m, bhd);
@@ -381,13 +398,14 @@ BOOST_AUTO_TEST_CASE(turning_angles_closing_and_lengths_against_dense_computatio
   BOOST_TEST(gap.norm() <= 1e-12 * total);
 
   // the polygon written in the map has those edges, up to one scale and one rotation
-  const double scale = (r.border_uv[1] - r.border_uv[0]).norm() / r.closed_lengths[0];
+  const std::vector<Eigen::Vector2d> polygon = eigen_polygon(r.border_uv);
+  const double scale = (polygon[1] - polygon[0]).norm() / r.closed_lengths[0];
   for(std::size_t k = 0; k < mb; ++k)
   {
-    const Eigen::Vector2d e = r.border_uv[(k + 1) % mb] - r.border_uv[k];
+    const Eigen::Vector2d e = polygon[(k + 1) % mb] - polygon[k];
     BOOST_TEST(std::abs(e.norm() - scale * r.closed_lengths[k]) <= 1e-12);
-    const Eigen::Vector2d p(uv[r.border_vertices[k]].x(), uv[r.border_vertices[k]].y());
-    BOOST_TEST((p - r.border_uv[k]).norm() == 0.);
+    const Eigen::Vector2d p(uv[loop[k]].x(), uv[loop[k]].y());
+    BOOST_TEST((p - polygon[k]).norm() == 0.);
   }
 }
 
@@ -398,16 +416,15 @@ BOOST_AUTO_TEST_CASE(the_sign_of_the_correction)
   Mesh m = make(mbp_test::bumpy_disk(8, 24));
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
   UV_map ours = new_uv(m, "v:ours"), wrong = new_uv(m, "v:wrong");
-  Full full;
-  full.set_border_choice(Full::CONFORMAL_BORDER);
+  const SMP::Conformal_parameterizer_3<Mesh, SMP::Conformal_border> full;
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, full, bhd, ours), SMP::OK);
 
   Border border;
   UV_map b = new_uv(m, "v:b");
   auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
-  BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, b, vim, vpm), SMP::OK);
-  const Border::Record& r = border.last_record();
+  Report r;
+  BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, b, vim, vpm, &r), SMP::OK);
   std::vector<double> opposite(r.turning_angles.size());
   double sum = 0.;
   for(std::size_t k = 0; k < opposite.size(); ++k)
@@ -417,7 +434,7 @@ BOOST_AUTO_TEST_CASE(the_sign_of_the_correction)
   }
   BOOST_TEST(std::abs(sum - 2. * CGAL_PI) > 1e-2);
   Given_border given;
-  given.vertices = r.border_vertices;
+  given.vertices = mbp_test::border_loop_vertices(m, bhd);
   BOOST_REQUIRE(SMP::internal::polygon_from_turning_angles(opposite, r.edge_lengths, given.uv) == SMP::OK);
   SMP::Discrete_conformal_map_parameterizer_3<Mesh, Given_border, LU> dcp(given);
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, wrong), SMP::OK);
@@ -434,29 +451,27 @@ BOOST_AUTO_TEST_CASE(a_self_overlapping_border_is_blended_until_valid)
   UV_map b = new_uv(m, "v:b");
   auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
-  BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, b, vim, vpm), SMP::OK);
-  const Border::Record& r = border.last_record();
+  Report r;
+  BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, b, vim, vpm, &r), SMP::OK);
   // the conformal border itself overlaps: a blend was needed, and the result is simple
-  BOOST_TEST(r.blend > 0.);
-  BOOST_TEST(r.blend < 1.);
-  BOOST_TEST(SMP::internal::is_simple_polygon(r.border_uv));
+  BOOST_TEST(r.conformal_blend > 0.);
+  BOOST_TEST(r.conformal_blend < 1.);
+  BOOST_TEST(SMP::internal::is_simple_polygon(eigen_polygon(r.border_uv)));
   std::vector<Eigen::Vector2d> at_zero;
   BOOST_REQUIRE(SMP::internal::polygon_from_turning_angles(r.turning_angles, r.edge_lengths, at_zero) == SMP::OK);
   BOOST_TEST(!SMP::internal::is_simple_polygon(at_zero));
 
   // the complete parameterizer: the smallest blend whose layout is one-to-one
   UV_map uv = new_uv(m, "v:uv");
-  Full conformal;
-  BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, uv, &conformal), SMP::OK);
+  Report report;
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, uv, &report), SMP::OK);
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
-  const Full::Report& report = conformal.last_report();
-  BOOST_TEST(report.kept_border == Full::CONFORMAL);
-  BOOST_TEST(report.blend >= r.blend);
+  BOOST_TEST(report.kept_border == SMP::CONFORMAL);
+  BOOST_TEST(report.blend >= r.conformal_blend);
   BOOST_TEST(report.blend < 1.);
   // the automatic border: valid, and never worse than that
   UV_map automatic_uv = new_uv(m, "v:automatic");
-  Full automatic;
-  BOOST_REQUIRE_EQUAL(flatten(m, Full::AUTOMATIC_BORDER, automatic_uv, &automatic), SMP::OK);
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Automatic_border<> >(m, automatic_uv), SMP::OK);
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), automatic_uv));
   BOOST_TEST(angle_distortion(m, automatic_uv) <= angle_distortion(m, uv) * (1. + 1e-12));
 }
@@ -472,7 +487,7 @@ BOOST_AUTO_TEST_CASE(drop_in_border_in_cgal_dcp_equals_the_complete_parameterize
     Mesh m = make(named.second);
     const halfedge_descriptor bhd = mbp_test::longest_border(m);
     UV_map full_uv = new_uv(m, "v:full"), dcp_uv = new_uv(m, "v:dcp");
-    BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, full_uv), SMP::OK);
+    BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, full_uv), SMP::OK);
     SMP::Discrete_conformal_map_parameterizer_3<Mesh, Border, LU> dcp;
     BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, dcp_uv), SMP::OK);
     double diff = 0.;
@@ -490,18 +505,20 @@ BOOST_AUTO_TEST_CASE(drop_in_border_in_every_fixed_border_parameterizer_and_mesh
   Mesh m = make(soup);
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
   UV_map uv = new_uv(m, "v:uv");
-  Border border;  // copies share its record
-  SMP::Discrete_conformal_map_parameterizer_3<Mesh, Border> dcp(border);
+  Report report;  // the report of the border step that CGAL's DCP runs on its copy
+  SMP::Discrete_conformal_map_parameterizer_3<Mesh, Reporting_border> dcp(Reporting_border{&report});
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, uv), SMP::OK);
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
-  BOOST_TEST(border.is_border_convex());
-  for(std::size_t k = 0; k < border.border_vertices().size(); ++k)
+  BOOST_TEST(report.border_convex);
+  const std::vector<vertex_descriptor> loop = mbp_test::border_loop_vertices(m, bhd);
+  BOOST_REQUIRE_EQUAL(report.border_uv.size(), loop.size());
+  for(std::size_t k = 0; k < loop.size(); ++k)
   {
-    const K::Point_2 p = uv[border.border_vertices()[k]];
-    BOOST_TEST(std::abs(p.x() - border.border_polygon()[k].x()) == 0.);
-    BOOST_TEST(std::abs(p.y() - border.border_polygon()[k].y()) == 0.);
+    const K::Point_2 p = uv[loop[k]];
+    BOOST_TEST(std::abs(p.x() - report.border_uv[k][0]) == 0.);
+    BOOST_TEST(std::abs(p.y() - report.border_uv[k][1]) == 0.);
   }
-  SMP::Mean_value_coordinates_parameterizer_3<Mesh, Border> mvc(border);
+  SMP::Mean_value_coordinates_parameterizer_3<Mesh, Border> mvc;
   BOOST_TEST(SMP::parameterize(m, mvc, bhd, uv) == SMP::OK);
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
   SMP::Barycentric_mapping_parameterizer_3<Mesh, Border> bary;
@@ -517,10 +534,11 @@ BOOST_AUTO_TEST_CASE(drop_in_border_in_every_fixed_border_parameterizer_and_mesh
   typedef boost::graph_traits<Poly>::vertex_descriptor Pv;
   std::map<Pv, EPICK::Point_2> uv_storage;
   auto poly_uv = boost::make_assoc_property_map(uv_storage);
-  SMP::Conformal_border_parameterizer_3<Poly> poly_border;
-  SMP::Discrete_conformal_map_parameterizer_3<Poly, SMP::Conformal_border_parameterizer_3<Poly> > poly_dcp(poly_border);
+  typedef mbp_test::Reporting_border<SMP::Conformal_border_parameterizer_3<Poly> > Poly_border;
+  Report poly_report;
+  SMP::Discrete_conformal_map_parameterizer_3<Poly, Poly_border> poly_dcp(Poly_border{&poly_report});
   BOOST_REQUIRE_EQUAL(SMP::parameterize(poly, poly_dcp, mbp_test::longest_border(poly), poly_uv), SMP::OK);
-  BOOST_TEST(poly_border.border_polygon() == border.border_polygon());
+  BOOST_TEST((poly_report.border_uv == report.border_uv));
 
   // Seam_mesh: a tube cut open along one of its lines is a disk
   mbp_test::Soup tube = grid(24, 6, [](double a, double b) {
@@ -551,12 +569,14 @@ BOOST_AUTO_TEST_CASE(drop_in_border_in_every_fixed_border_parameterizer_and_mesh
   typedef boost::graph_traits<Seam>::vertex_descriptor Sv;
   std::map<Sv, K::Point_2> seam_storage;
   auto seam_uv = boost::make_assoc_property_map(seam_storage);
-  SMP::Conformal_border_parameterizer_3<Seam> seam_border;
-  SMP::Discrete_conformal_map_parameterizer_3<Seam, SMP::Conformal_border_parameterizer_3<Seam>, LU> seam_dcp(seam_border);
+  typedef mbp_test::Reporting_border<SMP::Conformal_border_parameterizer_3<Seam> > Seam_border;
+  Report seam_report;
+  SMP::Discrete_conformal_map_parameterizer_3<Seam, Seam_border, LU> seam_dcp(Seam_border{&seam_report});
   BOOST_REQUIRE_EQUAL(SMP::parameterize(seam, seam_dcp, seam_bhd, seam_uv), SMP::OK);
   // the tube is developable: the cut-open tube unrolls to a rectangle (four corners turn by
   // pi/2, every other border vertex is straight)
-  const auto& turning = seam_border.last_record().turning_angles;
+  const auto& turning = seam_report.turning_angles;
+  BOOST_TEST(!turning.empty());
   int corners = 0;
   for(double k : turning)
   {
@@ -566,33 +586,34 @@ BOOST_AUTO_TEST_CASE(drop_in_border_in_every_fixed_border_parameterizer_and_mesh
       BOOST_TEST(std::abs(k) <= 1e-9);
   }
   BOOST_TEST(corners == 4);
-  SMP::Measured_conformal_parameterizer_3<Seam> seam_full;
-  seam_full.set_border_choice(SMP::Measured_conformal_parameterizer_3<Seam>::CONFORMAL_BORDER);
+  SMP::Conformal_parameterizer_3<Seam, SMP::Conformal_border> seam_full;
   std::map<Sv, K::Point_2> full_storage;
   auto full_uv = boost::make_assoc_property_map(full_storage);
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(seam, seam_full, seam_bhd, full_uv), SMP::OK);
-  BOOST_TEST(seam_full.last_report().statistics.factorizations == 1);
+  Report seam_full_report;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(seam, seam_full, seam_bhd, full_uv, &seam_full_report), SMP::OK);
+  BOOST_TEST(seam_full_report.statistics.factorizations == 1);
 }
 
 BOOST_AUTO_TEST_CASE(holes_are_filled_as_for_the_measured_border)
 {
   Mesh m = make(mbp_test::disk_with_two_holes());
   UV_map uv = new_uv(m, "v:uv");
-  Full full;
-  BOOST_REQUIRE_EQUAL(flatten(m, Full::CONFORMAL_BORDER, uv, &full), SMP::OK);
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, uv), SMP::OK);
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
   Border border;
   UV_map b = new_uv(m, "v:b");
   auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
-  BOOST_REQUIRE_EQUAL(border.parameterize(m, mbp_test::longest_border(m), b, vim, vpm), SMP::OK);
+  Report r;
+  BOOST_REQUIRE_EQUAL(border.parameterize(m, mbp_test::longest_border(m), b, vim, vpm, &r), SMP::OK);
+  BOOST_REQUIRE(!r.turning_angles.empty());
   double sum = 0.;
-  for(double k : border.last_record().turning_angles)
+  for(double k : r.turning_angles)
     sum += k;
   BOOST_TEST(std::abs(sum - 2. * CGAL_PI) <= 1e-10);
   // the conformal border beats the circle on this curved disk
   UV_map circle = new_uv(m, "v:circle");
-  BOOST_REQUIRE_EQUAL(flatten(m, Full::CIRCULAR_BORDER, circle), SMP::OK);
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Circular_border>(m, circle), SMP::OK);
   BOOST_TEST(angle_distortion(m, uv) < 0.5 * angle_distortion(m, circle));
 }
 
@@ -600,57 +621,60 @@ BOOST_AUTO_TEST_CASE(one_factorization_unless_poisson_distances_are_asked_for)
 {
   Mesh m = make(mbp_test::bumpy_disk());
   UV_map uv = new_uv(m, "v:uv");
-  for(Full::Border_choice choice : {Full::CONFORMAL_BORDER, Full::CIRCULAR_BORDER})
-  {
-    Full p;
-    BOOST_REQUIRE_EQUAL(flatten(m, choice, uv, &p), SMP::OK);
-    BOOST_TEST(p.last_report().statistics.factorizations == 1);
-    BOOST_TEST(p.center() == boost::graph_traits<Mesh>::null_vertex());
-  }
+  auto no_center_one_factorization = [&](auto policy, const char* name) {
+    BOOST_TEST_CONTEXT(name)
+    {
+      Report r;
+      BOOST_REQUIRE_EQUAL(flatten<decltype(policy)>(m, uv, &r), SMP::OK);
+      BOOST_TEST(r.statistics.factorizations == 1);
+      BOOST_TEST(!r.has_center);
+    }
+  };
+  no_center_one_factorization(SMP::Conformal_border(), "conformal");
+  no_center_one_factorization(SMP::Circular_border(), "circle");
   // conformal: the angle defects, then u and v
-  Full conformal;
-  flatten(m, Full::CONFORMAL_BORDER, uv, &conformal);
-  BOOST_TEST(conformal.last_report().statistics.back_substitutions == 3);
+  Report conformal;
+  flatten<SMP::Conformal_border>(m, uv, &conformal);
+  BOOST_TEST(conformal.statistics.back_substitutions == 3);
   // automatic with geodesic distances: still one factorization
-  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
-    SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics> > geodesic;
-  geodesic.set_border_choice(decltype(geodesic)::AUTOMATIC_BORDER);
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, geodesic, mbp_test::longest_border(m), uv), SMP::OK);
-  BOOST_TEST(geodesic.last_report().statistics.factorizations == 1);
+  SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<SMP::Poisson_center_locator,
+    SMP::Geodesic_border_distance<SMP::Fast_marching_geodesics> > > geodesic;
+  Report geodesic_report;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, geodesic, mbp_test::longest_border(m), uv, &geodesic_report), SMP::OK);
+  BOOST_TEST(geodesic_report.statistics.factorizations == 1);
   // automatic with the paper's Poisson distances: the conformal layout is valid here, so the
   // measured member is not built: no center, no spring Laplacian
-  Full poisson;
-  BOOST_REQUIRE_EQUAL(flatten(m, Full::AUTOMATIC_BORDER, uv, &poisson), SMP::OK);
-  BOOST_TEST(poisson.last_report().statistics.factorizations == 1);
-  BOOST_TEST(poisson.center() == boost::graph_traits<Mesh>::null_vertex());
+  Report poisson;
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Automatic_border<> >(m, uv, &poisson), SMP::OK);
+  BOOST_TEST(poisson.statistics.factorizations == 1);
+  BOOST_TEST(!poisson.has_center);
   // the measured border alone: the paper's two factorizations
-  Full measured;
-  BOOST_REQUIRE_EQUAL(flatten(m, Full::MEASURED_BORDER, uv, &measured), SMP::OK);
-  BOOST_TEST(measured.last_report().statistics.factorizations == 2);
+  Report measured;
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Measured_border<> >(m, uv, &measured), SMP::OK);
+  BOOST_TEST(measured.statistics.factorizations == 2);
 }
 
 BOOST_AUTO_TEST_CASE(automatic_border_keeps_the_best_valid_candidate)
 {
   Mesh m = make(mbp_test::bumpy_disk());
   UV_map uv = new_uv(m, "v:uv");
-  Full p;
-  BOOST_REQUIRE_EQUAL(flatten(m, Full::AUTOMATIC_BORDER, uv, &p), SMP::OK);
-  const Full::Report& r = p.last_report();
+  Report r;
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Automatic_border<> >(m, uv, &r), SMP::OK);
   BOOST_REQUIRE(r.chosen_candidate >= 0);
   bool members[3] = {false, false, false};
-  for(const Full::Border_candidate& c : r.border_candidates)
+  for(const SMP::Border_candidate& c : r.border_candidates)
   {
     if(c.valid)
       BOOST_TEST(r.border_candidates[std::size_t(r.chosen_candidate)].objective <= c.objective);
     members[c.family] = true;
   }
-  BOOST_TEST(members[Full::CIRCLE]);
-  BOOST_TEST(members[Full::CONFORMAL]);
-  BOOST_TEST(!members[Full::MEASURED]);  // built only when the conformal layout folds
+  BOOST_TEST(members[SMP::CIRCLE]);
+  BOOST_TEST(members[SMP::CONFORMAL]);
+  BOOST_TEST(!members[SMP::MEASURED]);  // built only when the conformal layout folds
   // the kept layout is the one written, and its figure is the paper's angle distortion
   BOOST_TEST(std::abs(angle_distortion(m, uv) - r.border_candidates[std::size_t(r.chosen_candidate)].objective) <=
              1e-9 * angle_distortion(m, uv));
-  BOOST_TEST(r.kept_border == Full::CONFORMAL);
+  BOOST_TEST(r.kept_border == SMP::CONFORMAL);
 }
 
 // ------------------------------------------------------------------ real disks (extended tier)
@@ -676,19 +700,18 @@ BOOST_AUTO_TEST_CASE(real_disks_automatic_border, MBP_EXTENDED_TIER)
     Mesh m;
     mbp_test::read_mesh(mbp_test::shared_mesh(name), m);
     UV_map uv = new_uv(m, "v:uv"), circle = new_uv(m, "v:circle");
-    Full p;
     BOOST_TEST_CONTEXT(name)
     {
-      BOOST_REQUIRE_EQUAL(flatten(m, Full::AUTOMATIC_BORDER, uv, &p), SMP::OK);
-      const Full::Report& r = p.last_report();
+      Report r;
+      BOOST_REQUIRE_EQUAL(flatten<SMP::Automatic_border<> >(m, uv, &r), SMP::OK);
       const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
       BOOST_TEST(q.flipped_faces == 0u);
       BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
-      for(const Full::Border_candidate& c : r.border_candidates)
+      for(const SMP::Border_candidate& c : r.border_candidates)
         if(c.valid)
           BOOST_TEST(q.angle_distortion <= c.objective * (1. + 1e-9) + 1e-15);
       double circle_distortion = std::numeric_limits<double>::quiet_NaN();
-      if(flatten(m, Full::CIRCULAR_BORDER, circle) == SMP::OK)
+      if(flatten<SMP::Circular_border>(m, circle) == SMP::OK)
         circle_distortion = angle_distortion(m, circle);
       ratios.push_back(q.angle_distortion / circle_distortion);
       BOOST_TEST_MESSAGE(name << ": automatic " << q.angle_distortion << " (kept " << int(r.kept_border)

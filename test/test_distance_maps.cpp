@@ -7,8 +7,9 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// Poisson distance maps (paper Eq. 1), the patch that shares one factorization, the center
-// locators, and the quality measures, on generated meshes whose geometry is known.
+// Poisson distance maps (paper Eq. 1), the disk that shares one factorization
+// (internal::Disk, the model of MeasuredDisk the policies see), the center locators, and the
+// quality measures, on generated meshes whose geometry is known.
 
 #define BOOST_TEST_MODULE distance_maps
 #include <boost/test/unit_test.hpp>
@@ -18,11 +19,12 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
-#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
-#include <CGAL/Surface_mesh_parameterization/internal/center_selection.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/center_selection.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 #include <CGAL/Surface_mesh_parameterization/poisson_distance_map.h>
 
@@ -39,7 +41,7 @@ typedef CGAL::Surface_mesh<K::Point_3>                      Mesh;
 typedef boost::graph_traits<Mesh>::vertex_descriptor        vertex_descriptor;
 typedef boost::graph_traits<Mesh>::halfedge_descriptor      halfedge_descriptor;
 typedef Mesh::Property_map<vertex_descriptor, double>       Dmap;
-typedef SMP::Parameterization_patch_3<Mesh>                 Patch;
+typedef SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> Disk;
 
 namespace {
 
@@ -92,12 +94,12 @@ BOOST_AUTO_TEST_CASE(bpdm_maximum_is_the_center_of_an_ellipse)
   // a single, clear global maximum at the polar vertex (paper Fig. 6)
   BOOST_TEST(f[center] > second * (1. + 1e-6));
 
-  SMP::Poisson_center_locator<Mesh> locator;
-  Patch patch;
-  BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
+  SMP::Poisson_center_locator locator;
+  Disk disk;
+  BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
   std::size_t c = 0;
-  BOOST_REQUIRE_EQUAL(locator.locate_center(patch, c), SMP::OK);
-  BOOST_TEST(patch.vertex(c) == center);
+  BOOST_REQUIRE_EQUAL(locator.locate_center(disk, c), SMP::OK);
+  BOOST_TEST(disk.vertex(c) == center);
 }
 
 BOOST_AUTO_TEST_CASE(bpdm_respects_the_symmetries_of_the_ellipse)
@@ -279,37 +281,37 @@ BOOST_AUTO_TEST_CASE(custom_vertex_point_map)
     BOOST_TEST(std::abs(b[v] - 2. * a[v]) < 1e-9 * (1. + a[v]));
 }
 
-// ------------------------------------------------------------------ patch and policies
+// ------------------------------------------------------------------ disk and policies
 
-BOOST_AUTO_TEST_CASE(patch_shares_one_factorization_of_the_interior_laplacian)
+BOOST_AUTO_TEST_CASE(disk_shares_one_factorization_of_the_interior_laplacian)
 {
   Mesh m = make(mbp_test::bumpy_disk());
-  Patch patch;
-  BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
-  BOOST_TEST(patch.border().size() == std::size_t(24));
-  BOOST_TEST(patch.interior_vertices().size() + patch.border().size() == num_vertices(m));
-  BOOST_TEST(patch.number_of_border_loops() == 1);
+  Disk disk;
+  BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
+  BOOST_TEST(disk.border().size() == std::size_t(24));
+  BOOST_TEST(disk.interior_vertices().size() + disk.border().size() == num_vertices(m));
+  BOOST_TEST(disk.number_of_border_loops() == 1);
   // border loop order: source(h) for h around the border face
   std::vector<vertex_descriptor> expected;
   for(halfedge_descriptor h : halfedges_around_face(mbp_test::longest_border(m), m))
     expected.push_back(source(h, m));
   for(std::size_t k = 0; k < expected.size(); ++k)
-    BOOST_TEST(patch.vertex(static_cast<std::size_t>(patch.border()[k])) == expected[k]);
+    BOOST_TEST(disk.vertex(static_cast<std::size_t>(disk.border()[k])) == expected[k]);
 
   std::size_t c = 0;
-  BOOST_REQUIRE_EQUAL(SMP::Poisson_center_locator<Mesh>().locate_center(patch, c), SMP::OK);
-  BOOST_TEST(patch.statistics().factorizations == 1);
-  BOOST_TEST(patch.statistics().back_substitutions == 1);
-  std::vector<double> rhs(patch.interior_vertices().size(), 1.), x;
-  BOOST_REQUIRE_EQUAL(patch.solve_interior(rhs, x), SMP::OK);
-  BOOST_REQUIRE_EQUAL(patch.solve_interior(rhs, x), SMP::OK);
-  BOOST_TEST(patch.statistics().factorizations == 1);       // reused
-  BOOST_TEST(patch.statistics().back_substitutions == 3);
+  BOOST_REQUIRE_EQUAL(SMP::Poisson_center_locator().locate_center(disk, c), SMP::OK);
+  BOOST_TEST(disk.statistics().factorizations == 1);
+  BOOST_TEST(disk.statistics().back_substitutions == 1);
+  std::vector<double> rhs(disk.interior_vertices().size(), 1.), x;
+  BOOST_REQUIRE_EQUAL(disk.solve_interior(rhs, x), SMP::OK);
+  BOOST_REQUIRE_EQUAL(disk.solve_interior(rhs, x), SMP::OK);
+  BOOST_TEST(disk.statistics().factorizations == 1);       // reused
+  BOOST_TEST(disk.statistics().back_substitutions == 3);
 
   std::vector<double> dist;
-  BOOST_REQUIRE_EQUAL(SMP::Poisson_border_distance<Mesh>().compute_border_distances(patch, c, dist), SMP::OK);
-  BOOST_TEST(patch.statistics().factorizations == 2);       // the spring Laplacian
-  BOOST_TEST(dist.size() == patch.border().size());
+  BOOST_REQUIRE_EQUAL(SMP::Poisson_border_distance().compute_border_distances(disk, c, dist), SMP::OK);
+  BOOST_TEST(disk.statistics().factorizations == 2);       // the spring Laplacian
+  BOOST_TEST(dist.size() == disk.border().size());
   for(double d : dist)
     BOOST_TEST(d > 0.);
 }
@@ -317,32 +319,32 @@ BOOST_AUTO_TEST_CASE(patch_shares_one_factorization_of_the_interior_laplacian)
 BOOST_AUTO_TEST_CASE(fixed_center_returns_the_user_vertex_and_rejects_border_vertices)
 {
   Mesh m = make(mbp_test::bumpy_disk());
-  Patch patch;
-  BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
+  Disk disk;
+  BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
   std::size_t c = 0;
-  BOOST_REQUIRE_EQUAL(SMP::Fixed_center<Mesh>(vertex_descriptor(5)).locate_center(patch, c), SMP::OK);
-  BOOST_TEST(patch.vertex(c) == vertex_descriptor(5));
+  BOOST_REQUIRE_EQUAL(SMP::Fixed_center<Mesh>(vertex_descriptor(5)).locate_center(disk, c), SMP::OK);
+  BOOST_TEST(disk.vertex(c) == vertex_descriptor(5));
   const vertex_descriptor b = source(mbp_test::longest_border(m), m);
-  BOOST_TEST(SMP::Fixed_center<Mesh>(b).locate_center(patch, c) == SMP::ERROR_WRONG_PARAMETER);
-  BOOST_TEST(SMP::Fixed_center<Mesh>().locate_center(patch, c) == SMP::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(SMP::Fixed_center<Mesh>(b).locate_center(disk, c) == SMP::ERROR_WRONG_PARAMETER);
+  BOOST_TEST(SMP::Fixed_center<Mesh>().locate_center(disk, c) == SMP::ERROR_WRONG_PARAMETER);
 }
 
 BOOST_AUTO_TEST_CASE(tied_maxima_resolve_to_the_vertex_nearest_their_mean)
 {
   Mesh m = make(mbp_test::polar_disk(RINGS, SPOKES, 2., 1.));
-  Patch patch;
-  BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
+  Disk disk;
+  BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
   // two symmetric maxima on the long axis (as BGDM has on the paper's ellipse), equal up
   // to rounding: the center is the polar vertex between them
-  std::vector<double> values(patch.number_of_vertices(), 0.);
-  values[static_cast<std::size_t>(patch.index(vertex_at(m, 0.6, 0.)))] = 1.;
-  values[static_cast<std::size_t>(patch.index(vertex_at(m, -0.6, 0.)))] = 1. - 1e-13;
-  const int c = SMP::internal::argmax_with_tie_break(patch, values);
+  std::vector<double> values(disk.number_of_vertices(), 0.);
+  values[static_cast<std::size_t>(disk.index(vertex_at(m, 0.6, 0.)))] = 1.;
+  values[static_cast<std::size_t>(disk.index(vertex_at(m, -0.6, 0.)))] = 1. - 1e-13;
+  const int c = SMP::internal::argmax_with_tie_break(disk, values);
   BOOST_REQUIRE(c >= 0);
-  BOOST_TEST(patch.vertex(static_cast<std::size_t>(c)) == vertex_descriptor(0));
+  BOOST_TEST(disk.vertex(static_cast<std::size_t>(c)) == vertex_descriptor(0));
   // a clear single maximum wins outright
-  values[static_cast<std::size_t>(patch.index(vertex_at(m, -0.6, 0.)))] = 0.9;
-  BOOST_TEST(patch.vertex(static_cast<std::size_t>(SMP::internal::argmax_with_tie_break(patch, values)))
+  values[static_cast<std::size_t>(disk.index(vertex_at(m, -0.6, 0.)))] = 0.9;
+  BOOST_TEST(disk.vertex(static_cast<std::size_t>(SMP::internal::argmax_with_tie_break(disk, values)))
              == vertex_at(m, 0.6, 0.));
 }
 

@@ -22,8 +22,10 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/fast_marching.h>
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
+#include <CGAL/Surface_mesh_parameterization/geodesic_distance_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/fast_marching.h>
 
 #include <Eigen/Core>
 
@@ -43,7 +45,9 @@ namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef SMP::internal::Fast_marching                        Fast_marching;
 typedef CGAL::Simple_cartesian<double>                      K;
 typedef CGAL::Surface_mesh<K::Point_3>                      Mesh;
-typedef SMP::Parameterization_patch_3<Mesh>                 Patch;
+typedef SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> Disk;
+typedef mbp_test::Arrays                                    Arrays;
+typedef mbp_test::Lcg                                       Lcg;
 
 namespace {
 
@@ -51,50 +55,23 @@ const double INF = std::numeric_limits<double>::infinity();
 
 // ------------------------------------------------------------------ meshes as plain arrays
 
-struct Arrays
-{
-  std::vector<Eigen::Vector3d> points;
-  std::vector<std::array<int, 3> > faces;
-  std::vector<int> border;  // the main border loop, for the real meshes
-};
+Arrays from_soup(const mbp_test::Soup& s) { return mbp_test::arrays_from_soup(s); }
 
-Arrays from_soup(const mbp_test::Soup& s)
-{
-  Arrays a;
-  for(const auto& p : s.points)
-    a.points.emplace_back(p[0], p[1], p[2]);
-  for(const auto& f : s.faces)
-    a.faces.push_back({{int(f[0]), int(f[1]), int(f[2])}});
-  return a;
-}
-
-// A real disk mesh of the project's meshes (extended tier) through the package's patch
+// A real disk mesh of the project's meshes (extended tier) through the package's disk
 // (indexing, checks), as arrays.
 Arrays read_disk(const std::string& name)
 {
   Mesh mesh;
   mbp_test::read_mesh(mbp_test::shared_mesh(name), mesh);
-  Patch patch;
-  BOOST_REQUIRE_EQUAL(patch.build_disk(mesh, mbp_test::longest_border(mesh), get(CGAL::vertex_point, mesh)),
+  Disk disk;
+  BOOST_REQUIRE_EQUAL(disk.build_disk(mesh, mbp_test::longest_border(mesh), get(CGAL::vertex_point, mesh)),
                       SMP::OK);
   Arrays a;
-  a.points = patch.points();
-  a.faces = patch.faces_indices();
-  a.border = patch.border();
+  a.points = disk.points();
+  a.faces = disk.faces_indices();
+  a.border = disk.border();
   return a;
 }
-
-// Deterministic pseudo-random numbers in [0, 1) (same sequence on every platform).
-struct Lcg
-{
-  std::uint32_t state;
-  explicit Lcg(std::uint32_t seed) : state(seed) {}
-  double operator()()
-  {
-    state = state * 1664525u + 1013904223u;
-    return double(state >> 8) / double(1u << 24);
-  }
-};
 
 // The square [-1,1]^2 on an n x n grid; interior vertices moved by up to `jitter` * h in x and
 // y, every square split along a random diagonal: about half of the triangles are obtuse.
@@ -1042,4 +1019,46 @@ BOOST_AUTO_TEST_CASE(work_grows_linearly)
   }
   BOOST_TEST(per_vertex.front() <= 12.);
   BOOST_TEST(per_vertex.back() <= 1.05 * per_vertex.front());
+}
+
+// ------------------------------------------------------------------ rigid motions
+// (moved from test_edges.cpp, issue 15's edge: a right angle rounded below 90 degrees must
+// not take the obtuse branch)
+
+BOOST_AUTO_TEST_CASE(fast_marching_on_right_angled_triangles_is_invariant_under_a_rigid_motion)
+{
+  typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef Mesh::Property_map<vertex_descriptor, double> Distance_map;
+  const mbp_test::Soup grid = mbp_test::square_grid(16);
+  const Mesh m = mbp_test::make_mesh<Mesh>(grid);
+  // corner, middle of a side, and center of the square
+  std::vector<std::vector<vertex_descriptor> > sources;
+  for(const std::array<double, 2>& q : std::vector<std::array<double, 2> >{{{0., 0.}}, {{0.5, 0.}}, {{0.5, 0.5}}})
+    for(vertex_descriptor v : vertices(m))
+      if(std::abs(m.point(v).x() - q[0]) < 1e-12 && std::abs(m.point(v).y() - q[1]) < 1e-12)
+        sources.push_back(std::vector<vertex_descriptor>(1, v));
+  BOOST_REQUIRE_EQUAL(sources.size(), 3u);
+  for(const auto& motion : {mbp_test::rigid_motion(std::sqrt(2.), {{0.3, -1.7, 2.9}}),
+                            mbp_test::rigid_motion(CGAL_PI / 7., {{1e3, 0., -2.}}),
+                            mbp_test::rigid_motion(1., {{0., 0., 0.}})})
+  {
+    Mesh moved = mbp_test::make_mesh<Mesh>(grid, motion);
+    for(const auto& source : sources)
+      BOOST_TEST_CONTEXT("source " << std::size_t(source.front()))
+      {
+        Mesh a = m;
+        Distance_map da = a.add_property_map<vertex_descriptor, double>("v:d", -1.).first;
+        Distance_map db = moved.add_property_map<vertex_descriptor, double>("v:d", -1.).first;
+        BOOST_REQUIRE_EQUAL(SMP::geodesic_distance_map<SMP::Fast_marching_geodesics>(a, source, da), SMP::OK);
+        BOOST_REQUIRE_EQUAL(SMP::geodesic_distance_map<SMP::Fast_marching_geodesics>(moved, source, db), SMP::OK);
+        double worst = 0., largest = 0.;
+        for(vertex_descriptor v : vertices(a))
+        {
+          worst = (std::max)(worst, std::abs(da[v] - db[v]));
+          largest = (std::max)(largest, da[v]);
+        }
+        BOOST_TEST(worst <= 1e-12 * largest, "relative deviation " << worst / largest);
+        moved.remove_property_map(db);
+      }
+  }
 }

@@ -25,6 +25,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_center_locator.h>
@@ -33,6 +34,7 @@
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/Straightest_geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_distance_map.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -54,15 +56,11 @@ typedef boost::graph_traits<Mesh>::vertex_descriptor            vertex_descripto
 typedef Mesh::Property_map<vertex_descriptor, double>           Dmap;
 typedef SMP::Heat_method_geodesics<>                            Heat;
 typedef SMP::Heat_method_geodesics<CGAL::Heat_method_3::Intrinsic_Delaunay> Heat_idt;
+typedef SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> Disk;
 
 namespace {
 
-Mesh make(const mbp_test::Soup& soup)
-{
-  Mesh m;
-  mbp_test::soup_to_mesh(soup, m);
-  return m;
-}
+Mesh make(const mbp_test::Soup& soup) { return mbp_test::make_mesh<Mesh>(soup); }
 
 double euclid(const Mesh& m, vertex_descriptor a, vertex_descriptor b)
 {
@@ -191,12 +189,12 @@ BOOST_AUTO_TEST_CASE(geodesic_center_respects_the_symmetries)
   // the ellipse has two BGDM maxima (paper Fig. 6): the tie-break gives the polar vertex
   {
     Mesh m = make(mbp_test::hex_disk(12, 2., 1.));
-    SMP::Parameterization_patch_3<Mesh> patch;
+    Disk patch;
     BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
     std::size_t c = 0;
-    BOOST_REQUIRE_EQUAL((SMP::Geodesic_center_locator<Mesh, SMP::Exact_geodesics>().locate_center(patch, c)), SMP::OK);
+    BOOST_REQUIRE_EQUAL((SMP::Geodesic_center_locator<SMP::Exact_geodesics>().locate_center(patch, c)), SMP::OK);
     BOOST_TEST(patch.vertex(c) == vertex_descriptor(0));
-    BOOST_REQUIRE_EQUAL((SMP::Geodesic_center_locator<Mesh, SMP::Fast_marching_geodesics>().locate_center(patch, c)),
+    BOOST_REQUIRE_EQUAL((SMP::Geodesic_center_locator<SMP::Fast_marching_geodesics>().locate_center(patch, c)),
                         SMP::OK);
     BOOST_TEST(std::abs(m.point(patch.vertex(c)).y()) < 1e-12);  // on the long axis
   }
@@ -210,12 +208,12 @@ BOOST_AUTO_TEST_CASE(geodesic_center_respects_the_symmetries)
       p[2] = 0.3 * p[0] * p[0];
     }
     Mesh m = make(soup);
-    SMP::Parameterization_patch_3<Mesh> patch;
+    Disk patch;
     BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
     std::size_t c = 0;
-    BOOST_REQUIRE_EQUAL((SMP::Geodesic_center_locator<Mesh, SMP::Exact_geodesics>().locate_center(patch, c)), SMP::OK);
+    BOOST_REQUIRE_EQUAL((SMP::Geodesic_center_locator<SMP::Exact_geodesics>().locate_center(patch, c)), SMP::OK);
     BOOST_TEST(std::abs(m.point(patch.vertex(c)).x()) < 1e-12);
-    BOOST_REQUIRE_EQUAL(SMP::Poisson_center_locator<Mesh>().locate_center(patch, c), SMP::OK);
+    BOOST_REQUIRE_EQUAL(SMP::Poisson_center_locator().locate_center(patch, c), SMP::OK);
     BOOST_TEST(std::abs(m.point(patch.vertex(c)).x()) < 1e-12);
   }
 }
@@ -255,10 +253,10 @@ MBP_TIERED_TEST_CASE(exact_measured_border_reproduces_flat_star_shaped_meshes)
   for(auto& named : meshes)
   {
     const SMP::Parameterization_quality a =
-      measured<SMP::Poisson_center_locator<Mesh>, SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics> >(named.second);
+      measured<SMP::Poisson_center_locator, SMP::Geodesic_border_distance<SMP::Exact_geodesics> >(named.second);
     const SMP::Parameterization_quality b =
-      measured<SMP::Geodesic_center_locator<Mesh, SMP::Exact_geodesics>,
-               SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics> >(named.second);
+      measured<SMP::Geodesic_center_locator<SMP::Exact_geodesics>,
+               SMP::Geodesic_border_distance<SMP::Exact_geodesics> >(named.second);
     BOOST_TEST_MESSAGE(named.first << ": exact MBPGP angle distortion " << a.angle_distortion << ", L2 "
                        << a.l2_stretch << ", area " << a.area_distortion_max);
     for(const SMP::Parameterization_quality& q : {a, b})
@@ -286,8 +284,8 @@ MBP_TIERED_TEST_CASE(flat_domain_not_star_shaped_is_not_reproduced)
   else
     mbp_test::read_mesh(mbp_test::shared_mesh("alligator.obj"), m);
   auto uv = m.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
-  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
-                                          SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics> > p;
+  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator,
+                                          SMP::Geodesic_border_distance<SMP::Exact_geodesics> > p;
   const SMP::Error_code status = SMP::parameterize(m, p, mbp_test::longest_border(m), uv);
   BOOST_TEST_MESSAGE("exact MBPGP on a flat non-star-shaped domain: " << SMP::get_measured_error_message(status));
   if(status == SMP::OK)
@@ -305,11 +303,12 @@ BOOST_AUTO_TEST_CASE(geodesic_variant_costs_one_factorization_and_three_back_sub
 {
   Mesh m = make(mbp_test::bumpy_disk());
   auto uv = m.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
-  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
-                                          SMP::Geodesic_border_distance<Mesh> > p;
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, p, mbp_test::longest_border(m), uv), SMP::OK);
-  BOOST_TEST(p.last_report().statistics.factorizations == 1);
-  BOOST_TEST(p.last_report().statistics.back_substitutions == 3);
+  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator,
+                                          SMP::Geodesic_border_distance<> > p;
+  SMP::Parameterization_report report;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, p, mbp_test::longest_border(m), uv, &report), SMP::OK);
+  BOOST_TEST(report.statistics.factorizations == 1);
+  BOOST_TEST(report.statistics.back_substitutions == 3);
 }
 
 // ------------------------------------------------------------------ the policy matrix
@@ -323,20 +322,20 @@ typedef CGAL::Polyhedron_3<EPICK>                                            Pol
 
 template <class M> struct Centers
 {
-  typedef std::tuple<SMP::Poisson_center_locator<M>,
-                     SMP::Geodesic_center_locator<M, SMP::Fast_marching_geodesics>,
-                     SMP::Geodesic_center_locator<M, SMP::Dijkstra_geodesics>,
-                     SMP::Geodesic_center_locator<M, Heat>,
-                     SMP::Geodesic_center_locator<M, SMP::Exact_geodesics> > type;
+  typedef std::tuple<SMP::Poisson_center_locator,
+                     SMP::Geodesic_center_locator<SMP::Fast_marching_geodesics>,
+                     SMP::Geodesic_center_locator<SMP::Dijkstra_geodesics>,
+                     SMP::Geodesic_center_locator<Heat>,
+                     SMP::Geodesic_center_locator<SMP::Exact_geodesics> > type;
 };
 template <class M> struct Distances
 {
-  typedef std::tuple<SMP::Poisson_border_distance<M>,
-                     SMP::Geodesic_border_distance<M, SMP::Fast_marching_geodesics>,
-                     SMP::Geodesic_border_distance<M, SMP::Dijkstra_geodesics>,
-                     SMP::Geodesic_border_distance<M, Heat>,
-                     SMP::Geodesic_border_distance<M, SMP::Exact_geodesics>,
-                     SMP::Straightest_geodesic_border_distance<M> > type;
+  typedef std::tuple<SMP::Poisson_border_distance,
+                     SMP::Geodesic_border_distance<SMP::Fast_marching_geodesics>,
+                     SMP::Geodesic_border_distance<SMP::Dijkstra_geodesics>,
+                     SMP::Geodesic_border_distance<Heat>,
+                     SMP::Geodesic_border_distance<SMP::Exact_geodesics>,
+                     SMP::Straightest_geodesic_border_distance > type;
 };
 
 // Runs one center/distance combination on `mesh`: a valid star-shaped layout, or (only for
@@ -351,9 +350,10 @@ void run_combination(M& mesh, int& runs, int& straightest_failures)
   std::map<vertex, Point_2> uv_storage;
   auto uv = boost::make_assoc_property_map(uv_storage);
   SMP::Measured_conformal_parameterizer_3<M, Center, Distance> p;
-  const SMP::Error_code status = SMP::parameterize(mesh, p, mbp_test::longest_border(mesh), uv);
+  SMP::Parameterization_report report;
+  const SMP::Error_code status = SMP::parameterize(mesh, p, mbp_test::longest_border(mesh), uv, &report);
   ++runs;
-  if(std::is_same<Distance, SMP::Straightest_geodesic_border_distance<M> >::value &&
+  if(std::is_same<Distance, SMP::Straightest_geodesic_border_distance >::value &&
      status == SMP::ERROR_DISTANCE_COMPUTATION_FAILED)
   {
     ++straightest_failures;
@@ -365,7 +365,7 @@ void run_combination(M& mesh, int& runs, int& straightest_failures)
     const SMP::Parameterization_quality q = SMP::measure_quality(mesh, faces(mesh), uv);
     BOOST_TEST(q.flipped_faces == 0u);
     BOOST_TEST(std::isfinite(q.angle_distortion));
-    BOOST_TEST(p.last_report().vertices == num_vertices(mesh));
+    BOOST_TEST(report.vertices == num_vertices(mesh));
   }
 }
 

@@ -33,6 +33,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
 #include <Eigen/SparseLU>
@@ -147,15 +148,19 @@ bool strictly_convex_clockwise(const std::vector<SC::Point_2>& p)
 template <class Mesh>
 UV_by_point measured_dcp(const Mesh& mesh)
 {
-  typedef SMP::Measured_border_parameterizer_3<Mesh> Border;
+  typedef mbp_test::Reporting_border<SMP::Measured_border_parameterizer_3<Mesh> > Border;
   typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
   Mesh& m = const_cast<Mesh&>(mesh);
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
   Maps<Mesh> maps(m);
-  Border border;
-  SMP::Discrete_conformal_map_parameterizer_3<Mesh, Border, LU> dcp(border);
+  SMP::Parameterization_report report;
+  SMP::Discrete_conformal_map_parameterizer_3<Mesh, Border, LU> dcp(Border{&report});
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, maps.uv), SMP::OK);
-  BOOST_TEST((border.center() != boost::graph_traits<Mesh>::null_vertex()));  // record shared with the copy
+  // the report of the border step that ran inside CGAL's DCP
+  BOOST_TEST(report.status == SMP::OK);
+  BOOST_REQUIRE(report.has_center);
+  const auto center = mbp_test::vertex_at_position(m, report.center);
+  BOOST_TEST(!is_border(center, m));
   const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), maps.uv);
   BOOST_TEST(q.flipped_faces == 0u);
   UV_by_point result;
@@ -218,26 +223,35 @@ BOOST_AUTO_TEST_CASE(border_is_the_polar_map_of_the_measured_distances)
     const auto bhd = mbp_test::longest_border(m);
     Maps<SM> maps(m);
     SMP::Measured_border_parameterizer_3<SM> border;
-    BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, maps.uv, index_map(m), maps.parameterized), SMP::OK);
-    const auto& rec = border.last_record();
-    const std::size_t n = rec.border_vertices.size();
+    SMP::Parameterization_report rec;
+    BOOST_REQUIRE_EQUAL(border.parameterize(m, bhd, maps.uv, index_map(m), maps.parameterized, &rec), SMP::OK);
+    // border vertex k of the report is the source of the k-th halfedge of halfedges_around_face(bhd)
+    const std::vector<SM_vertex> loop = mbp_test::border_loop_vertices(m, bhd);
+    const std::size_t n = loop.size();
     BOOST_REQUIRE(n >= 3u);
+    BOOST_REQUIRE_EQUAL(rec.border_uv.size(), n);
     BOOST_REQUIRE_EQUAL(rec.border_distances.size(), n);
     BOOST_REQUIRE_EQUAL(rec.border_angles.size(), n);
-    BOOST_TEST(!is_border(rec.center, m));
+    BOOST_REQUIRE(rec.has_center);
+    const SM_vertex center = mbp_test::vertex_at_position(m, rec.center);
+    BOOST_TEST(!is_border(center, m));
 
-    // the loop starts at source(bhd) and follows halfedges_around_face(bhd)
+    // the loop starts at source(bhd) and follows halfedges_around_face(bhd): the report's
+    // polygon is the one written in the map, in that order
     std::size_t k = 0;
-    for(auto h : halfedges_around_face(bhd, m))
-      BOOST_TEST(rec.border_vertices[k++] == source(h, m));
+    for(k = 0; k < n; ++k)
+    {
+      BOOST_TEST(rec.border_uv[k][0] == get(maps.uv, loop[k]).x());
+      BOOST_TEST(rec.border_uv[k][1] == get(maps.uv, loop[k]).y());
+    }
 
     // angles: 0 first, strictly increasing, proportional to the 3D angles at the center
-    const SC::Point_3& c = m.point(rec.center);
+    const SC::Point_3& c = m.point(center);
     double total = 0.;
     std::vector<double> theta(n);
     for(k = 0; k < n; ++k)
     {
-      const SC::Vector_3 a = m.point(rec.border_vertices[k]) - c, b = m.point(rec.border_vertices[(k + 1) % n]) - c;
+      const SC::Vector_3 a = m.point(loop[k]) - c, b = m.point(loop[(k + 1) % n]) - c;
       theta[k] = std::acos((std::max)(-1., (std::min)(1., a * b / std::sqrt(a.squared_length() * b.squared_length()))));
       total += theta[k];
     }
@@ -255,12 +269,12 @@ BOOST_AUTO_TEST_CASE(border_is_the_polar_map_of_the_measured_distances)
     double lo[2] = {1e9, 1e9}, hi[2] = {-1e9, -1e9};
     for(k = 0; k < n; ++k)
     {
-      const SC::Point_2 p = get(maps.uv, rec.border_vertices[k]);
-      BOOST_TEST(get(maps.parameterized, rec.border_vertices[k]));
+      const SC::Point_2 p = get(maps.uv, loop[k]);
+      BOOST_TEST(get(maps.parameterized, loop[k]));
       BOOST_TEST(rec.border_distances[k] > 0.);
       const double r = rec.polar_scale * rec.border_distances[k];
-      BOOST_TEST(std::abs(p.x() - (rec.polar_origin.x() + r * std::cos(-rec.border_angles[k]))) < 1e-12);
-      BOOST_TEST(std::abs(p.y() - (rec.polar_origin.y() + r * std::sin(-rec.border_angles[k]))) < 1e-12);
+      BOOST_TEST(std::abs(p.x() - (rec.polar_origin[0] + r * std::cos(-rec.border_angles[k]))) < 1e-12);
+      BOOST_TEST(std::abs(p.y() - (rec.polar_origin[1] + r * std::sin(-rec.border_angles[k]))) < 1e-12);
       lo[0] = (std::min)(lo[0], p.x()); lo[1] = (std::min)(lo[1], p.y());
       hi[0] = (std::max)(hi[0], p.x()); hi[1] = (std::max)(hi[1], p.y());
       polygon.push_back(p);
@@ -280,17 +294,18 @@ BOOST_AUTO_TEST_CASE(border_is_the_polar_map_of_the_measured_distances)
     SMP::Circular_border_arc_length_parameterizer_3<SM>().parameterize(m, bhd, circle_maps.uv, index_map(m),
                                                                         circle_maps.parameterized);
     std::vector<SC::Point_2> circle;
-    for(auto v : rec.border_vertices)
+    for(auto v : loop)
       circle.push_back(get(circle_maps.uv, v));
     BOOST_TEST(signed_area(circle) < 0.);
     // both put source(bhd) at angle 0, to the right of their center
     BOOST_TEST(std::abs(circle[0].y() - 0.5) < 1e-15);
     BOOST_TEST(circle[0].x() > 0.5);
-    BOOST_TEST(std::abs(polygon[0].y() - rec.polar_origin.y()) < 1e-12);
-    BOOST_TEST(polygon[0].x() > rec.polar_origin.x());
+    BOOST_TEST(std::abs(polygon[0].y() - rec.polar_origin[1]) < 1e-12);
+    BOOST_TEST(polygon[0].x() > rec.polar_origin[0]);
 
-    // is_border_convex() is honest
+    // is_border_convex() is honest, and so is the report
     BOOST_TEST(border.is_border_convex() == strictly_convex_clockwise(polygon));
+    BOOST_TEST(rec.border_convex == strictly_convex_clockwise(polygon));
   }
 }
 
@@ -348,22 +363,27 @@ BOOST_AUTO_TEST_CASE(drop_in_for_every_fixed_border_parameterizer)
   }
 }
 
-BOOST_AUTO_TEST_CASE(record_is_shared_with_copies_and_policies_plug_in)
+BOOST_AUTO_TEST_CASE(report_of_the_call_inside_cgal_dcp_and_policies_plug_in)
 {
-  typedef SMP::Measured_border_parameterizer_3<SM, SMP::Fixed_center<SM> > Border;
+  typedef SMP::Measured_border_parameterizer_3<SM, SMP::Fixed_center<SM> > Measured;
+  typedef mbp_test::Reporting_border<Measured> Border;
   SM m = make<SM>(mbp_test::bumpy_disk());
   const SM_vertex chosen(17);
   BOOST_REQUIRE(!is_border(chosen, m));
-  Border border{SMP::Fixed_center<SM>(chosen)};
-  SMP::Discrete_conformal_map_parameterizer_3<SM, Border, LU> dcp(border);
+  SMP::Parameterization_report report;
+  const Measured measured{Measured::Border_policy(SMP::Fixed_center<SM>(chosen))};
+  BOOST_TEST(measured.border_policy().center_locator().vertex() == chosen);
+  SMP::Discrete_conformal_map_parameterizer_3<SM, Border, LU> dcp(Border(&report, measured));
   Maps<SM> maps(m);
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, mbp_test::longest_border(m), maps.uv), SMP::OK);
-  BOOST_TEST(border.center() == chosen);
-  BOOST_TEST(border.border_vertices().size() == std::size_t(24));
-  // a copy made after the call shares the record too
-  Border copy = border;
-  BOOST_TEST(copy.center() == chosen);
-  BOOST_TEST(copy.last_record().statistics.factorizations == 1);  // Fixed_center: only the PDM
+  // the report of the border step that CGAL's DCP ran on its own copy
+  BOOST_TEST(report.status == SMP::OK);
+  BOOST_REQUIRE(report.has_center);
+  BOOST_TEST(SM_vertex(SM::size_type(report.center)) == chosen);
+  BOOST_TEST(report.border_uv.size() == std::size_t(24));
+  BOOST_TEST(report.statistics.factorizations == 1);  // Fixed_center: only the PDM
+  // nothing is shared between copies: the object given to DCP made no call of its own
+  BOOST_TEST(!measured.is_border_convex());
 }
 
 // ------------------------------------------------------------------ generic over meshes
@@ -418,10 +438,11 @@ BOOST_AUTO_TEST_CASE(seam_mesh_with_a_cut)
       BOOST_REQUIRE(add_seam(path[i], path[i + 1]));
     const auto bhd = mbp_test::longest_border(seam);
     Maps<Seam> maps(seam);
-    SMP::Measured_border_parameterizer_3<Seam> border;
-    SMP::Discrete_conformal_map_parameterizer_3<Seam, SMP::Measured_border_parameterizer_3<Seam>, LU> dcp(border);
+    typedef mbp_test::Reporting_border<SMP::Measured_border_parameterizer_3<Seam> > Border;
+    SMP::Parameterization_report report;
+    SMP::Discrete_conformal_map_parameterizer_3<Seam, Border, LU> dcp(Border{&report});
     BOOST_REQUIRE_EQUAL(SMP::parameterize(seam, dcp, bhd, maps.uv), SMP::OK);
-    BOOST_TEST(border.border_vertices().size() == std::size_t(spokes + 2 * cut));
+    BOOST_TEST(report.border_uv.size() == std::size_t(spokes + 2 * cut));
     BOOST_TEST(SMP::measure_quality(seam, faces(seam), maps.uv).flipped_faces == 0u);
     // the two copies of a slit vertex are apart in UV
     std::map<Key3, std::vector<typename Maps<Seam>::Point_2> > copies;
@@ -472,7 +493,7 @@ BOOST_AUTO_TEST_CASE(slit_pointing_at_the_center_is_a_degenerate_border_map)
     if(key(seam, v) == Key3{0., 0., 0.})
       center = v;
   Maps<Seam_sm> maps(seam);
-  Border border{SMP::Fixed_center<Seam_sm>(center)};
+  Border border{Border::Border_policy(SMP::Fixed_center<Seam_sm>(center))};
   BOOST_TEST(border.parameterize(seam, mbp_test::longest_border(seam), maps.uv, index_map(seam), maps.parameterized)
              == SMP::ERROR_DEGENERATE_BORDER_MAP);
   BOOST_TEST(maps.untouched(seam));
@@ -512,12 +533,14 @@ void expect_failure(Mesh& m, typename boost::graph_traits<Mesh>::halfedge_descri
 {
   Maps<Mesh> maps(m);
   SMP::Measured_border_parameterizer_3<Mesh> border;
-  BOOST_TEST(border.parameterize(m, bhd, maps.uv, index_map(m), maps.parameterized) == expected,
-             SMP::get_measured_error_message(border.parameterize(m, bhd, maps.uv, index_map(m), maps.parameterized)));
+  SMP::Parameterization_report report;
+  const SMP::Error_code status = border.parameterize(m, bhd, maps.uv, index_map(m), maps.parameterized, &report);
+  BOOST_TEST(status == expected, SMP::get_measured_error_message(status));
   BOOST_TEST(maps.untouched(m));
   BOOST_TEST(!border.is_border_convex());
-  BOOST_TEST((border.center() == boost::graph_traits<Mesh>::null_vertex()));
-  BOOST_TEST(border.last_record().status == expected);
+  BOOST_TEST(!report.has_center);
+  BOOST_TEST(report.status == expected);
+  BOOST_TEST(report.border_uv.empty());
   if(bhd != boost::graph_traits<Mesh>::null_halfedge() && !faces(m).empty())
   {
     SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Measured_border_parameterizer_3<Mesh>, LU> dcp;

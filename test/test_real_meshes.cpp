@@ -26,6 +26,7 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 #include <CGAL/Surface_mesh_parameterization/poisson_distance_map.h>
 
@@ -120,16 +121,19 @@ Comparison compare_borders(mbp_test::Tier tier, const std::string& name)
   mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), mesh);
   Comparison c;
   c.circle = dcp(mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh>());
-  SMP::Measured_border_parameterizer_3<Mesh> measured;
-  c.measured = dcp(mesh, measured);
+  SMP::Parameterization_report measured;  // the report of the border step inside CGAL's DCP
+  c.measured = dcp(mesh, mbp_test::Reporting_border<SMP::Measured_border_parameterizer_3<Mesh> >(&measured));
   BOOST_REQUIRE_EQUAL(c.circle.status, SMP::OK);
   BOOST_REQUIRE_MESSAGE(c.measured.status == SMP::OK,
                         name << ": " << SMP::get_measured_error_message(c.measured.status));
+  BOOST_TEST(measured.status == SMP::OK);
+  BOOST_REQUIRE(measured.has_center);
+  const vertex_descriptor center = mbp_test::vertex_at_position(mesh, measured.center);
   BOOST_TEST_MESSAGE(name << ": V " << num_vertices(mesh) << ", angle distortion circle "
                      << c.circle.q.angle_distortion << " measured " << c.measured.q.angle_distortion
                      << " (ratio " << c.ratio() << "), L2 circle " << c.circle.q.l2_stretch << " measured "
                      << c.measured.q.l2_stretch << ", flips circle " << c.circle.q.flipped_faces
-                     << " measured " << c.measured.q.flipped_faces << ", center " << measured.center());
+                     << " measured " << c.measured.q.flipped_faces << ", center " << center);
   return c;
 }
 
@@ -198,23 +202,31 @@ MBP_TIERED_TEST_CASE(border_polygon_is_star_shaped_and_convexity_is_honest)
     auto done = mesh.add_property_map<vertex_descriptor, bool>("v:done", false).first;
     auto vimap = mesh.add_property_map<vertex_descriptor, int>("v:i", 0).first;
     SMP::Measured_border_parameterizer_3<Mesh> border;
-    BOOST_REQUIRE_EQUAL(border.parameterize(mesh, mbp_test::longest_border(mesh), uv, vimap, done), SMP::OK);
-    const auto& angles = border.border_angles();
-    const auto& radii = border.border_distances();
+    SMP::Parameterization_report report;
+    const auto bhd = mbp_test::longest_border(mesh);
+    BOOST_REQUIRE_EQUAL(border.parameterize(mesh, bhd, uv, vimap, done, &report), SMP::OK);
+    const auto& angles = report.border_angles;
+    const auto& radii = report.border_distances;
+    const std::vector<vertex_descriptor> loop = mbp_test::border_loop_vertices(mesh, bhd);
     bool strictly_convex = true;
     const std::size_t n = angles.size();
+    BOOST_REQUIRE_EQUAL(radii.size(), n);
+    BOOST_REQUIRE_EQUAL(loop.size(), n);
     for(std::size_t k = 0; k < n; ++k)
     {
       if(k + 1 < n)
         BOOST_TEST(angles[k + 1] > angles[k]);
       BOOST_TEST(radii[k] > 0.);
-      const K::Point_2 &a = uv[border.border_vertices()[(k + n - 1) % n]], &b = uv[border.border_vertices()[k]],
-                       &c = uv[border.border_vertices()[(k + 1) % n]];
+      const K::Point_2 &a = uv[loop[(k + n - 1) % n]], &b = uv[loop[k]], &c = uv[loop[(k + 1) % n]];
       if(!(CGAL::orientation(a, b, c) == CGAL::RIGHT_TURN))
         strictly_convex = false;
     }
     BOOST_TEST(angles.back() < 2. * CGAL_PI);
-    BOOST_TEST_CONTEXT(name) { BOOST_TEST(border.is_border_convex() == strictly_convex); }
+    BOOST_TEST_CONTEXT(name)
+    {
+      BOOST_TEST(border.is_border_convex() == strictly_convex);
+      BOOST_TEST(report.border_convex == strictly_convex);
+    }
     (strictly_convex ? convex : non_convex)++;
   }
   BOOST_TEST(convex > 0);      // both cases were exercised

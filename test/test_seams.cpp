@@ -11,7 +11,8 @@
 // piece, counted on CGAL's Seam_mesh), the cut graph has 2g independent loops, cones sit where
 // the scale factor is extreme, results are deterministic and invariant under rigid motions,
 // the cut mesh flattens without flipped faces, shortening shortens, and bad input gets a
-// named error. Generated meshes: an icosphere, ellipsoids, a torus, a double torus, a
+// named error; the report names cones and problem elements by their position in vertices(tm)
+// and faces(tm), and the cone placement factorizes once. Generated meshes: an icosphere, ellipsoids, a torus, a double torus, a
 // cylinder, a disk with two holes, a punctured torus. The extended tier runs every closed,
 // holed and higher-genus mesh of the project's meshes.
 
@@ -28,13 +29,14 @@
 
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
-#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/compute_disk_seams.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <set>
 #include <string>
@@ -48,7 +50,7 @@ typedef boost::graph_traits<Mesh>::edge_descriptor            edge_descriptor;
 typedef Mesh::Property_map<edge_descriptor, bool>             Seam_edge_map;
 typedef Mesh::Property_map<vertex_descriptor, bool>           Seam_vertex_map;
 typedef CGAL::Seam_mesh<Mesh, Seam_edge_map, Seam_vertex_map> Seam_mesh;
-typedef SMP::Disk_seams_report<Mesh>                          Report;
+typedef SMP::Disk_seams_report                                Report;
 
 namespace {
 
@@ -203,8 +205,27 @@ Seams compute(Mesh& mesh, const SMP::Disk_seams_options& options = SMP::Disk_sea
   Seams s;
   s.edges = mesh.add_property_map<edge_descriptor, bool>("e:seam", false).first;
   s.vertices = mesh.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
-  s.status = SMP::compute_disk_seams(mesh, s.edges, s.vertices, s.report, options);
+  s.status = SMP::compute_disk_seams(mesh, s.edges, s.vertices, options, &s.report);
   return s;
+}
+
+// The vertex at `position` in vertices(mesh) (how the report names vertices), and back.
+vertex_descriptor vertex_at(const Mesh& mesh, std::size_t position)
+{
+  BOOST_REQUIRE_LT(position, num_vertices(mesh));
+  return *std::next(vertices(mesh).begin(), static_cast<std::ptrdiff_t>(position));
+}
+
+std::size_t position_of(const Mesh& mesh, vertex_descriptor v)
+{
+  return static_cast<std::size_t>(std::distance(vertices(mesh).begin(), std::find(vertices(mesh).begin(),
+                                                                                  vertices(mesh).end(), v)));
+}
+
+bool is_cone(const Mesh& mesh, const Seams& s, vertex_descriptor v)
+{
+  const std::vector<std::size_t>& cones = s.report.cones;
+  return std::find(cones.begin(), cones.end(), position_of(mesh, v)) != cones.end();
 }
 
 std::set<std::size_t> seam_set(const Mesh& mesh, const Seams& s)
@@ -276,8 +297,8 @@ void check_disk(const Mesh& mesh, const Seams& s)
     }
   BOOST_CHECK_EQUAL(count, s.report.number_of_seam_edges);
   BOOST_CHECK_CLOSE(length + 1., s.report.seam_length + 1., 1e-9);
-  for(vertex_descriptor c : s.report.cones)
-    BOOST_CHECK(get(s.vertices, c));
+  for(std::size_t c : s.report.cones)
+    BOOST_CHECK(get(s.vertices, vertex_at(mesh, c)));
   Seam_mesh sm(mesh, s.edges, s.vertices);
   sm.set_seam_edges_number(s.report.number_of_seam_edges);
   const Cut_topology t = cut_topology(sm);
@@ -323,9 +344,7 @@ SMP::Parameterization_quality flatten_and_check(const Mesh& mesh, const Seams& s
   sm.set_seam_edges_number(s.report.number_of_seam_edges);
   const auto bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
   auto uv = get(CGAL::dynamic_vertex_property_t<K::Point_2>(), sm);
-  typedef SMP::Measured_conformal_parameterizer_3<Seam_mesh> Parameterizer;
-  Parameterizer parameterizer;
-  parameterizer.set_border_choice(Parameterizer::CONFORMAL_BORDER);
+  const SMP::Conformal_parameterizer_3<Seam_mesh, SMP::Conformal_border> parameterizer;
   const SMP::Error_code status = SMP::parameterize(sm, parameterizer, bhd, uv);
   BOOST_REQUIRE_MESSAGE(status == SMP::OK, SMP::get_measured_error_message(status));
   const SMP::Parameterization_quality q = SMP::measure_quality(sm, faces(sm), uv);
@@ -359,8 +378,12 @@ BOOST_AUTO_TEST_CASE(sphere_is_cut_into_a_disk_through_the_default_cones)
     for(auto h : CGAL::halfedges_around_target(v, mesh))
       degree += get(s.edges, edge(h, mesh)) ? 1 : 0;
     if(degree == 1)
-      BOOST_CHECK(std::find(s.report.cones.begin(), s.report.cones.end(), v) != s.report.cones.end());
+      BOOST_CHECK(is_cone(mesh, s, v));
   }
+  // one factorization; a back-substitution for the first cone, for the scale factor, and for
+  // the Green function of each other cone
+  BOOST_CHECK_EQUAL(s.report.statistics.factorizations, 1);
+  BOOST_CHECK_EQUAL(s.report.statistics.back_substitutions, static_cast<int>(s.report.cones.size()) + 1);
   flatten_and_check(mesh, s);
 }
 
@@ -391,7 +414,8 @@ BOOST_AUTO_TEST_CASE(first_cones_are_the_tips_of_an_ellipsoid)
   const Seams s = compute(mesh, options);
   check_disk(mesh, s);
   BOOST_REQUIRE_EQUAL(s.report.cones.size(), 2u);
-  const double x0 = mesh.point(s.report.cones[0]).x(), x1 = mesh.point(s.report.cones[1]).x();
+  const double x0 = mesh.point(vertex_at(mesh, s.report.cones[0])).x();
+  const double x1 = mesh.point(vertex_at(mesh, s.report.cones[1])).x();
   BOOST_CHECK_CLOSE(std::abs(x0), 3., 1e-6);
   BOOST_CHECK_CLOSE(std::abs(x1), 3., 1e-6);
   BOOST_CHECK_LT(x0 * x1, 0.);
@@ -411,6 +435,7 @@ BOOST_AUTO_TEST_CASE(torus_gets_two_loops)
   BOOST_CHECK_EQUAL(s.report.number_of_loops, 2);
   BOOST_CHECK_EQUAL(cut_graph_cycle_rank(mesh, s), 2);
   BOOST_CHECK(s.report.cones.empty());
+  BOOST_CHECK_EQUAL(s.report.statistics.factorizations, 0);
   // the shortest system: a meridian (2 pi 0.7 = 4.40 on the smooth torus, the polygon is
   // shorter) and the inner equator (2 pi 1.3 = 8.17); a loop around the outer equator
   // (2 pi 2.7 = 17.0) would be far longer
@@ -531,6 +556,38 @@ BOOST_AUTO_TEST_CASE(seams_are_deterministic_and_invariant_under_rigid_motions)
   }
 }
 
+// The report is optional; the named parameter vertex_point_map gives the points: a mesh whose
+// own points are stretched, cut with the map of the original points, gets the original's seams.
+BOOST_AUTO_TEST_CASE(report_is_optional_and_points_come_from_the_named_parameter)
+{
+  Mesh mesh = make(icosphere(2, lumpy)), quiet = make(icosphere(2, lumpy)), stretched = make(icosphere(2, lumpy));
+  const Seams s = compute(mesh);
+  check_disk(mesh, s);
+  Seams q;
+  q.edges = quiet.add_property_map<edge_descriptor, bool>("e:seam", false).first;
+  q.vertices = quiet.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
+  BOOST_CHECK_EQUAL(SMP::compute_disk_seams(quiet, q.edges, q.vertices), SMP::OK);
+  BOOST_CHECK(seam_set(mesh, s) == seam_set(quiet, q));
+
+  auto original = stretched.add_property_map<vertex_descriptor, K::Point_3>("v:original").first;
+  for(vertex_descriptor v : vertices(stretched))
+  {
+    const K::Point_3 p = stretched.point(v);
+    put(original, v, p);
+    stretched.point(v) = K::Point_3(4. * p.x(), p.y(), 0.5 * p.z());
+  }
+  BOOST_CHECK(seam_set(mesh, s) != seam_set(stretched, compute(stretched)));
+  Seams t;
+  t.edges = stretched.add_property_map<edge_descriptor, bool>("e:seam2", false).first;
+  t.vertices = stretched.add_property_map<vertex_descriptor, bool>("v:seam2", false).first;
+  t.status = SMP::compute_disk_seams(stretched, t.edges, t.vertices, {}, &t.report,
+                                     CGAL::parameters::vertex_point_map(original));
+  BOOST_REQUIRE_EQUAL(t.status, SMP::OK);
+  BOOST_CHECK(seam_set(mesh, s) == seam_set(stretched, t));
+  BOOST_CHECK(s.report.cones == t.report.cones);
+  BOOST_CHECK_CLOSE(s.report.seam_length, t.report.seam_length, 1e-9);
+}
+
 // ---------------------------------------------------------------- shortening
 
 // A torus cut along a meridian that makes a detour, and the inner equator: shortening
@@ -540,9 +597,9 @@ BOOST_AUTO_TEST_CASE(shortening_straightens_a_detour)
   const int n = 24, m = 12;
   Mesh mesh = make(torus(n, m));
   SMP::internal::Indexed_surface s;
-  SMP::internal::Surface_indexing<Mesh> ix(mesh);
   Report report;
-  BOOST_REQUIRE_EQUAL(SMP::internal::index_surface(mesh, get(CGAL::vertex_point, mesh), s, ix, report), SMP::NO_PROBLEM);
+  SMP::internal::Surface_indexer<Mesh> indexer(mesh, s, report);
+  BOOST_REQUIRE_EQUAL(indexer.index(get(CGAL::vertex_point, mesh)), SMP::NO_PROBLEM);
   // soup vertex (i, j) is mesh vertex i*m + j (polygon_soup_to_polygon_mesh keeps the order)
   std::vector<char> cut(static_cast<std::size_t>(s.number_of_edges()), 0);
   auto mark = [&](int i0, int j0, int i1, int j1) {
@@ -602,7 +659,7 @@ BOOST_AUTO_TEST_CASE(bad_input_gets_a_named_error_and_no_output)
   Seams s;
   s.edges = mesh.add_property_map<edge_descriptor, bool>("e:seam", true).first;
   s.vertices = mesh.add_property_map<vertex_descriptor, bool>("v:seam", true).first;
-  s.status = SMP::compute_disk_seams(mesh, s.edges, s.vertices, s.report);
+  s.status = SMP::compute_disk_seams(mesh, s.edges, s.vertices, SMP::Disk_seams_options(), &s.report);
   BOOST_CHECK_EQUAL(s.status, SMP::ERROR_NO_TOPOLOGICAL_DISC);
   BOOST_CHECK_EQUAL(s.report.problem, SMP::SEVERAL_COMPONENTS);
   BOOST_CHECK_EQUAL(s.report.number_of_components, 2u);
@@ -620,7 +677,8 @@ BOOST_AUTO_TEST_CASE(bad_input_gets_a_named_error_and_no_output)
   const Seams b = compute(bow);
   BOOST_CHECK_EQUAL(b.status, SMP::ERROR_NO_TOPOLOGICAL_DISC);
   BOOST_CHECK_EQUAL(b.report.problem, SMP::NON_MANIFOLD_VERTEX);
-  BOOST_CHECK(b.report.problem_vertex == c);
+  BOOST_CHECK_EQUAL(b.report.problem_vertex, position_of(bow, c));
+  BOOST_CHECK_EQUAL(b.report.problem_face, Report::no_element);
   BOOST_CHECK(std::string(SMP::disk_seams_problem_message(b.report.problem)).find("manifold") != std::string::npos);
 
   // a quad
@@ -630,6 +688,7 @@ BOOST_AUTO_TEST_CASE(bad_input_gets_a_named_error_and_no_output)
   const Seams q = compute(quad);
   BOOST_CHECK_EQUAL(q.status, SMP::ERROR_NON_TRIANGULAR_MESH);
   BOOST_CHECK_EQUAL(q.report.problem, SMP::FACE_NOT_A_TRIANGLE);
+  BOOST_CHECK_EQUAL(q.report.problem_face, 0u);
 
   Mesh empty;
   BOOST_CHECK_EQUAL(compute(empty).status, SMP::ERROR_EMPTY_MESH);

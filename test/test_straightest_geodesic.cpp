@@ -8,7 +8,7 @@
 // Author(s)     : The measured boundary parameterization authors
 
 // Straightest geodesics of Lee et al. (2006), the "cutting plane" method behind the paper's
-// MBPSGP (internal/straightest_geodesic.h): straight segments on flat meshes, failures behind
+// MBPSGP (internal/distances/straightest_geodesic.h): straight segments on flat meshes, failures behind
 // the reentrant corner of an L, analytic geodesics of a cylinder and a sphere cap under
 // refinement, the polyline's properties, real meshes (how often the border is reached), and
 // degenerate input.
@@ -21,8 +21,8 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <CGAL/Surface_mesh_parameterization/internal/straightest_geodesic.h>
-#include <CGAL/Surface_mesh_parameterization/internal/triangle_adjacency.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/straightest_geodesic.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_adjacency.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -48,21 +48,9 @@ namespace {
 
 // ------------------------------------------------------------------ meshes as arrays
 
-struct Arrays
-{
-  std::vector<Eigen::Vector3d> points;
-  std::vector<Tri> faces;
-};
+typedef mbp_test::Arrays Arrays;
 
-Arrays from_soup(const mbp_test::Soup& s)
-{
-  Arrays a;
-  for(const auto& p : s.points)
-    a.points.emplace_back(p[0], p[1], p[2]);
-  for(const auto& f : s.faces)
-    a.faces.push_back({{int(f[0]), int(f[1]), int(f[2])}});
-  return a;
-}
+Arrays from_soup(const mbp_test::Soup& s) { return mbp_test::arrays_from_soup(s); }
 
 Arrays read_arrays(mbp_test::Tier tier, const std::string& name)
 {

@@ -20,22 +20,32 @@
 #define MBP_TEST_SUPPORT_H
 
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/number_type_config.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <functional>
+#include <map>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 // The decorator of an extended test case: BOOST_AUTO_TEST_CASE(name, MBP_EXTENDED_TIER).
@@ -333,6 +343,202 @@ void soup_to_mesh(const Soup& soup, Mesh& mesh)
     points.emplace_back(p[0], p[1], p[2]);
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, soup.faces, mesh);
   BOOST_REQUIRE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+
+// ---------------------------------------------------------------- the reports (issue 21)
+// Helpers of the suites that read the reports of the package's parameterizers
+// (test_measured_border, test_conformal, test_conformal_border, test_real_meshes).
+// ---------------------------------------------------------------- helpers shared by the suites
+// (issue 21, item 6: helpers that several suites used to copy)
+
+// Deterministic pseudo-random numbers in [0, 1) (the same sequence on every platform).
+struct Lcg
+{
+  std::uint32_t state;
+  explicit Lcg(std::uint32_t seed) : state(seed) {}
+  double operator()()
+  {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
+  }
+};
+
+// A map of the points of a soup (a similarity, a rigid motion...).
+typedef std::function<std::array<double, 3>(const std::array<double, 3>&)> Transform;
+
+inline Transform scaling(double factor)
+{
+  return [factor](const std::array<double, 3>& p) {
+    return std::array<double, 3>{{p[0] * factor, p[1] * factor, p[2] * factor}};
+  };
+}
+
+// A rotation by `angle` about the axis (1, 2, 3) and a translation.
+inline Transform rigid_motion(double angle, const std::array<double, 3>& translation)
+{
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, Eigen::Vector3d(1., 2., 3.).normalized()).toRotationMatrix();
+  return [R, translation](const std::array<double, 3>& p) {
+    const Eigen::Vector3d q = R * Eigen::Vector3d(p[0], p[1], p[2]);
+    return std::array<double, 3>{{q.x() + translation[0], q.y() + translation[1], q.z() + translation[2]}};
+  };
+}
+
+// The mesh of a soup, its points mapped by `transform` when given.
+template <class Mesh>
+Mesh make_mesh(const Soup& soup, const Transform& transform = nullptr)
+{
+  Soup s = soup;
+  if(transform)
+    for(auto& p : s.points)
+      p = transform(p);
+  Mesh m;
+  soup_to_mesh(s, m);
+  return m;
+}
+
+// A new UV property map of a Surface_mesh, every UV (-7, -7) (a value no parameterizer writes).
+template <class Mesh>
+typename Mesh::template Property_map<typename boost::graph_traits<Mesh>::vertex_descriptor,
+                                     typename Kernel_of<Mesh>::Point_2>
+new_uv_map(Mesh& m, const std::string& name)
+{
+  typedef typename Kernel_of<Mesh>::Point_2 Point_2;
+  return m.template add_property_map<typename boost::graph_traits<Mesh>::vertex_descriptor, Point_2>(
+    name, Point_2(-7, -7)).first;
+}
+
+// The vertices of the border loop of `bhd`, from source(bhd) on: vertex k is the source of
+// the k-th halfedge of the loop (the order of the reports' per-border-vertex fields).
+template <class Mesh>
+std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor>
+border_loop_vertices(const Mesh& m, typename boost::graph_traits<Mesh>::halfedge_descriptor bhd)
+{
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> loop;
+  for(auto h : CGAL::halfedges_around_face(bhd, m))
+    loop.push_back(source(h, m));
+  return loop;
+}
+
+// The vertex at `position` in the range vertices(m) (how a report names a vertex, e.g. its
+// center).
+template <class Mesh>
+typename boost::graph_traits<Mesh>::vertex_descriptor vertex_at_position(const Mesh& m, std::size_t position)
+{
+  BOOST_REQUIRE_LT(position, static_cast<std::size_t>(num_vertices(m)));
+  auto it = vertices(m).begin();
+  for(std::size_t k = 0; k < position; ++k)
+    ++it;
+  return *it;
+}
+
+// A border parameterizer of the package (Border_parameterizer_3: Measured_border_ or
+// Conformal_border_parameterizer_3) that writes the report of each of its calls into
+// `*report`: CGAL's fixed border parameterizers call the copy they hold without a report,
+// so this is how a test reads the report of the border step run inside CGAL's DCP (copies
+// share the pointer, which the test owns; the package's parameterizers share nothing).
+template <class Border>
+class Reporting_border : public Border
+{
+public:
+  explicit Reporting_border(CGAL::Surface_mesh_parameterization::Parameterization_report* report = nullptr,
+                            const Border& border = Border())
+    : Border(border), m_report(report)
+  { }
+
+  template <class VertexUVmap, class VertexIndexMap, class VertexParameterizedMap>
+  CGAL::Surface_mesh_parameterization::Error_code
+  parameterize(const typename Border::Triangle_mesh& mesh, typename Border::halfedge_descriptor bhd,
+               VertexUVmap uvmap, VertexIndexMap vimap, VertexParameterizedMap vpmap)
+  {
+    return Border::parameterize(mesh, bhd, uvmap, vimap, vpmap, m_report);
+  }
+
+private:
+  CGAL::Surface_mesh_parameterization::Parameterization_report* m_report;
+};
+
+// The vertices of the border loop of `h` as indices (a Surface_mesh's), sorted: the loop as a
+// set, to compare loops found from different halfedges.
+template <class Mesh>
+std::vector<std::size_t> sorted_loop(const Mesh& m, typename boost::graph_traits<Mesh>::halfedge_descriptor h)
+{
+  std::vector<std::size_t> loop;
+  for(auto b : CGAL::halfedges_around_face(h, m))
+    loop.push_back(std::size_t(source(b, m)));
+  std::sort(loop.begin(), loop.end());
+  return loop;
+}
+
+// The border loops of a mesh: one halfedge each, and how often the loop visits its most
+// visited vertex (more than once: the loop goes through a pinched vertex).
+template <class Mesh>
+std::vector<std::pair<typename boost::graph_traits<Mesh>::halfedge_descriptor, int> > border_loops(const Mesh& m)
+{
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  std::vector<std::pair<halfedge_descriptor, int> > loops;
+  std::set<halfedge_descriptor> seen;
+  for(halfedge_descriptor h : halfedges(m))
+    if(is_border(h, m) && seen.insert(h).second)
+    {
+      std::map<vertex_descriptor, int> visits;
+      int most = 0;
+      for(halfedge_descriptor b : CGAL::halfedges_around_face(h, m))
+      {
+        seen.insert(b);
+        most = (std::max)(most, ++visits[source(b, m)]);
+      }
+      loops.emplace_back(h, most);
+    }
+  return loops;
+}
+
+// The flat square [0,1]^2 on a grid of n x n squares, each split along the same diagonal:
+// every triangle is right-angled.
+inline Soup square_grid(int n)
+{
+  return notched_grid(n, n, n, [](int, int) { return false; });
+}
+
+// The spiral ramp: a strip of 1.6 turns, flat to first order, rising slowly; its conformal
+// border overlaps itself.
+inline Soup spiral_ramp(int cols = 120, int rows = 5)
+{
+  Soup s;
+  for(int i = 0; i <= cols; ++i)
+    for(int j = 0; j <= rows; ++j)
+    {
+      const double theta = 3.2 * CGAL_PI * i / cols, r = 1. + double(j) / rows;
+      s.points.push_back({{r * std::cos(theta), r * std::sin(theta), 0.08 * theta}});
+    }
+  auto id = [rows](int i, int j) { return std::size_t(i * (rows + 1) + j); };
+  for(int i = 0; i < cols; ++i)
+    for(int j = 0; j < rows; ++j)
+    {
+      s.faces.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+      s.faces.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+    }
+  return s;
+}
+
+// A triangle mesh as plain arrays (the kernels of fast marching and straightest geodesics
+// take them): points, faces, and the main border loop when it is known.
+struct Arrays
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::array<int, 3> > faces;
+  std::vector<int> border;
+};
+
+inline Arrays arrays_from_soup(const Soup& s)
+{
+  Arrays a;
+  for(const auto& p : s.points)
+    a.points.emplace_back(p[0], p[1], p[2]);
+  for(const auto& f : s.faces)
+    a.faces.push_back({{int(f[0]), int(f[1]), int(f[2])}});
+  return a;
 }
 
 } // namespace mbp_test

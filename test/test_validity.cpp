@@ -22,10 +22,13 @@
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/repair.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
 #include <cmath>
@@ -41,20 +44,13 @@ typedef boost::graph_traits<Mesh>::vertex_descriptor            vertex_descripto
 typedef boost::graph_traits<Mesh>::halfedge_descriptor          halfedge_descriptor;
 typedef Mesh::Property_map<vertex_descriptor, K::Point_2>       UV_map;
 typedef SMP::Measured_conformal_parameterizer_3<Mesh>           Conformal;
+typedef SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> Disk;
 
 namespace {
 
-Mesh make(const mbp_test::Soup& soup)
-{
-  Mesh m;
-  mbp_test::soup_to_mesh(soup, m);
-  return m;
-}
+Mesh make(const mbp_test::Soup& soup) { return mbp_test::make_mesh<Mesh>(soup); }
 
-UV_map new_uv(Mesh& m, const std::string& name)
-{
-  return m.add_property_map<vertex_descriptor, K::Point_2>(name, K::Point_2(-7, -7)).first;
-}
+UV_map new_uv(Mesh& m, const std::string& name) { return mbp_test::new_uv_map(m, name); }
 
 // The border loops of the mesh other than `bhd`'s, in UV: each must be a simple polygon.
 bool holes_are_simple_polygons(const Mesh& m, halfedge_descriptor bhd, UV_map uv, int& holes)
@@ -138,11 +134,8 @@ BOOST_AUTO_TEST_CASE(global_overlap_test_agrees_with_cgals)
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
   UV_map uv = new_uv(m, "v:uv");
   SMP::LSCM_parameterizer_3<Mesh> cgal;
-  std::uint32_t state = 12345u;
-  auto random = [&state]() {  // in [-1, 1), the same sequence everywhere
-    state = state * 1664525u + 1013904223u;
-    return 2. * double(state >> 8) / double(1u << 24) - 1.;
-  };
+  mbp_test::Lcg lcg(12345u);
+  auto random = [&lcg]() { return 2. * lcg() - 1.; };  // in [-1, 1), the same sequence everywhere
   int valid = 0, invalid = 0;
   for(int trial = 0; trial < 300; ++trial)
   {
@@ -167,7 +160,7 @@ BOOST_AUTO_TEST_CASE(global_overlap_test_agrees_with_cgals)
 BOOST_AUTO_TEST_CASE(patch_test_accepts_valid_and_rejects_folded_layouts)
 {
   Mesh m = make(mbp_test::disk_with_two_holes());
-  SMP::Parameterization_patch_3<Mesh> patch;
+  Disk patch;
   BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
   BOOST_REQUIRE_EQUAL(patch.hole_loops().size(), 2u);
   // the flat layout of the (almost flat) mesh: one-to-one
@@ -197,7 +190,7 @@ BOOST_AUTO_TEST_CASE(holes_are_filled_virtually_and_stay_simple_polygons)
 {
   Mesh m = make(mbp_test::disk_with_two_holes());
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
-  SMP::Parameterization_patch_3<Mesh> patch;
+  Disk patch;
   BOOST_REQUIRE_EQUAL(patch.build_disk(m, bhd, get(CGAL::vertex_point, m)), SMP::OK);
   BOOST_TEST(patch.number_of_border_loops() == 3);
   BOOST_TEST(patch.number_of_real_vertices() == num_vertices(m));
@@ -214,13 +207,15 @@ BOOST_AUTO_TEST_CASE(holes_are_filled_virtually_and_stay_simple_polygons)
 
   UV_map uv = new_uv(m, "v:uv");
   Conformal conformal;
-  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, bhd, uv), SMP::OK);
-  BOOST_TEST(!is_border(conformal.center(), m));
+  SMP::Parameterization_report report;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, bhd, uv, &report), SMP::OK);
+  BOOST_REQUIRE(report.has_center);
+  BOOST_TEST(!is_border(vertex_descriptor(Mesh::size_type(report.center)), m));
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
   int holes = 0;
   BOOST_TEST(holes_are_simple_polygons(m, bhd, uv, holes));
   BOOST_TEST(holes == 2);
-  BOOST_TEST(conformal.last_report().vertices == num_vertices(m));
+  BOOST_TEST(report.vertices == num_vertices(m));
 }
 
 MBP_TIERED_TEST_CASE(real_meshes_with_holes)
@@ -238,8 +233,8 @@ MBP_TIERED_TEST_CASE(real_meshes_with_holes)
       const halfedge_descriptor bhd = mbp_test::longest_border(m);
       UV_map uv = new_uv(m, "v:uv");
       Conformal conformal;
-      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, bhd, uv), SMP::OK);
-      const Conformal::Report& r = conformal.last_report();
+      SMP::Parameterization_report r;
+      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, bhd, uv, &r), SMP::OK);
       const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
       int holes = 0;
       BOOST_TEST(q.flipped_faces == 0u);
@@ -258,18 +253,20 @@ MBP_TIERED_TEST_CASE(real_meshes_with_holes)
 
 namespace {
 
-// Runs `parameterizer` without repair (a clear error and nothing written, or a valid map),
-// then with the default repair (always one-to-one). Returns whether it folded.
-template <class Parameterizer>
-bool check_repair(Mesh& m, Parameterizer parameterizer)
+// Runs a parameterizer with the border policy `border` without repair (a clear error and
+// nothing written, or a valid map), then with the default repair (always one-to-one).
+// Returns whether it folded.
+template <class BorderPolicy>
+bool check_repair(Mesh& m, const BorderPolicy& border)
 {
+  typedef SMP::Conformal_parameterizer_3<Mesh, BorderPolicy> Parameterizer;
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
   UV_map uv = new_uv(m, "v:uv");
   auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vimap = m.add_property_map<vertex_descriptor, int>("v:i", 0).first;
-  parameterizer.set_repair(Parameterizer::NO_REPAIR);
-  const SMP::Error_code raw = parameterizer.parameterize(m, bhd, uv, vimap, done);
-  const typename Parameterizer::Report before = parameterizer.last_report();
+  const Parameterizer unrepaired(border, typename Parameterizer::Solver_traits(), SMP::NO_REPAIR);
+  SMP::Parameterization_report before;
+  const SMP::Error_code raw = unrepaired.parameterize(m, bhd, uv, vimap, done, &before);
   if(raw == SMP::OK)
     BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
   else
@@ -282,9 +279,9 @@ bool check_repair(Mesh& m, Parameterizer parameterizer)
       BOOST_TEST(!done[v]);
     }
   }
-  parameterizer.set_repair(Parameterizer::BLEND_TOWARD_CIRCLE);
-  BOOST_REQUIRE_EQUAL(parameterizer.parameterize(m, bhd, uv, vimap, done), SMP::OK);
-  const typename Parameterizer::Report& r = parameterizer.last_report();
+  const Parameterizer repairing(border, typename Parameterizer::Solver_traits(), SMP::BLEND_TOWARD_CIRCLE);
+  SMP::Parameterization_report r;
+  BOOST_REQUIRE_EQUAL(repairing.parameterize(m, bhd, uv, vimap, done, &r), SMP::OK);
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
   BOOST_TEST(r.repaired == (raw != SMP::OK));
   BOOST_TEST(r.flipped_faces_before_repair == before.flipped_faces_before_repair);
@@ -316,8 +313,7 @@ BOOST_AUTO_TEST_CASE(generated_fold_is_repaired_or_rejected)
     if(CGAL::squared_distance(m.point(v), K::Point_3(1.5, 13. / 6., 0.)) < 1e-12)
       center = v;
   BOOST_REQUIRE(center != Mesh::null_vertex());
-  typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh>,
-                                                  SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics> > Exact;
+  typedef SMP::Measured_border<SMP::Fixed_center<Mesh>, SMP::Geodesic_border_distance<SMP::Exact_geodesics> > Exact;
   BOOST_TEST(check_repair(m, Exact(SMP::Fixed_center<Mesh>(center))));
 }
 
@@ -333,6 +329,6 @@ MBP_TIERED_TEST_CASE(real_folds_of_the_poisson_border_are_repaired_or_rejected)
     {
       Mesh m;
       mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), m);
-      BOOST_TEST(check_repair(m, Conformal()));
+      BOOST_TEST(check_repair(m, Conformal::Border_policy()));
     }
 }

@@ -42,15 +42,15 @@ namespace Surface_mesh_parameterization {
 /// dissection gives 29-38% less fill and a numeric refactorization up to 1.5 times as fast,
 /// but computing it costs more than it saves in a single factorization (714k vertices: 4.4 s
 /// against 2.6 s for AMD, analysis included), and every system of a call has its own
-/// pattern. The parameterizers default-construct their traits:
-/// `Cholmod_nested_dissection_cholesky_traits` selects nested dissection as a type. The
+/// pattern. Pass `Cholmod_supernodal_cholesky_traits(NESTED_DISSECTION)` to a parameterizer's
+/// constructor, or use the type `Cholmod_nested_dissection_cholesky_traits`. The
 /// symbolic analysis (ordering and supernodal structure) is kept and reused when the same object
 /// factorizes a matrix with the same pattern again (only the numeric factorization is
 /// redone): with nested dissection, such refactorizations are the fastest.
 ///
 /// The factor lives in CHOLMOD's memory; the matrix is not needed after `factor()`.
-/// Copies share the factor (as `CGAL::Eigen_solver_traits` share their solver): give each
-/// system its own object.
+/// A copy is a new solver with the same settings: it has no factor (the parameterizers copy
+/// the object they are given once per system).
 ///
 /// CHOLMOD's supernodal factorization runs its dense blocks in the BLAS, which may be
 /// multithreaded (OpenBLAS starts a thread per core by default): this class never changes
@@ -80,8 +80,26 @@ public:
 
   /// creates traits with the given ordering.
   explicit Cholmod_supernodal_cholesky_traits(Ordering ordering = AMD)
-    : m_state(std::make_shared<State>(ordering))
+    : m_state(std::make_unique<State>(ordering))
   { }
+
+  /// creates traits with the settings of `other` and no factor.
+  Cholmod_supernodal_cholesky_traits(const Cholmod_supernodal_cholesky_traits& other)
+    : m_state(std::make_unique<State>(other.ordering()))
+  { }
+
+  /// forgets the factor and takes the settings of `other`.
+  Cholmod_supernodal_cholesky_traits& operator=(const Cholmod_supernodal_cholesky_traits& other)
+  {
+    if(this != &other)
+      m_state = std::make_unique<State>(other.ordering());
+    return *this;
+  }
+
+  /// move construction and assignment keep the factor.
+  Cholmod_supernodal_cholesky_traits(Cholmod_supernodal_cholesky_traits&&) = default;
+  /// \copydoc Cholmod_supernodal_cholesky_traits(Cholmod_supernodal_cholesky_traits&&)
+  Cholmod_supernodal_cholesky_traits& operator=(Cholmod_supernodal_cholesky_traits&&) = default;
 
   /// the ordering.
   Ordering ordering() const { return m_state->ordering; }
@@ -227,16 +245,14 @@ private:
     std::vector<int> pattern_outer, pattern_inner;
   };
 
-  std::shared_ptr<State> m_state;
+  std::unique_ptr<State> m_state;
 };
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
 ///
 /// `Cholmod_supernodal_cholesky_traits` with METIS's nested dissection as its ordering, as a
-/// type: the parameterizers default-construct their solver traits (one object per system),
-/// so the ordering is chosen through the `SolverTraits` template argument, e.g.
-/// `Measured_conformal_parameterizer_3<Mesh, Poisson_center_locator<Mesh>,
-/// Poisson_border_distance<Mesh>, Cholmod_nested_dissection_cholesky_traits>`.
+/// type, e.g. `Conformal_parameterizer_3<Mesh, Automatic_border<>,
+/// Cholmod_nested_dissection_cholesky_traits>`.
 ///
 /// The choice for large meshes short of memory: from 179k vertices up the factor has 29-38%
 /// fewer nonzeros than with AMD (714k vertices: 35.3M against 54.6M; 13% at 45k), for a

@@ -46,16 +46,17 @@ public:
   /// the vertex this locator returns.
   vertex_descriptor vertex() const { return m_vertex; }
 
-  /// stores in `center` the patch index of the user's vertex.
+  /// stores in `center` the disk index of the user's vertex.
+  /// \tparam Disk a model of `MeasuredDisk`.
   /// \return `OK`, or `ERROR_WRONG_PARAMETER` when the vertex is null, is not a vertex of
-  ///         the patch, or lies on its border loop (the center must be interior).
-  template <class Patch>
-  Error_code locate_center(Patch& patch, std::size_t& center) const
+  ///         the disk, or lies on its border loop (the center must be interior).
+  template <class Disk>
+  Error_code locate_center(Disk& disk, std::size_t& center) const
   {
-    if(!patch.contains(m_vertex))  // null, not in this component, or not a vertex of the mesh
+    if(!disk.contains(m_vertex))  // null, not in this component, or not a vertex of the mesh
       return ERROR_WRONG_PARAMETER;
-    const int id = patch.index(m_vertex);
-    if(id < 0 || patch.is_on_border(static_cast<std::size_t>(id)))
+    const int id = disk.index(m_vertex);
+    if(id < 0 || disk.is_on_border(static_cast<std::size_t>(id)))
       return ERROR_WRONG_PARAMETER;
     center = static_cast<std::size_t>(id);
     return OK;

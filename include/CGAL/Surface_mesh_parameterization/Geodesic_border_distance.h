@@ -14,7 +14,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
-#include <CGAL/Surface_mesh_parameterization/internal/geodesic_solvers.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/geodesic_solvers.h>
 
 #include <cstddef>
 #include <vector>
@@ -31,49 +31,54 @@ namespace Surface_mesh_parameterization {
 ///
 /// Cost: one distance computation from one source. The method's source-independent work
 /// (`prepare()`: adjacency, mesh copy, the heat method's factorizations) is done once per
-/// patch and shared with a `Geodesic_center_locator` of the same `Method`; the
+/// disk and shared with a `Geodesic_center_locator` of the same `Method`; the
 /// parameterizers run `prepare()` concurrently with the center locator.
 ///
 /// \cgalModels `MeasuredBorderDistance`
 ///
-/// \tparam TriangleMesh a model of `FaceGraph`.
 /// \tparam Method `Fast_marching_geodesics` (default), `Dijkstra_geodesics`,
 ///         `Heat_method_geodesics<Mode>` or `Exact_geodesics`.
-template <class TriangleMesh, class Method = Fast_marching_geodesics>
+template <class Method = Fast_marching_geodesics>
 class Geodesic_border_distance
 {
 public:
   /// The geodesic method.
   typedef Method Geodesic_method;
 
-  /// the source-independent work of the method, shared by the patch.
-  template <class Patch>
-  Error_code prepare(Patch& patch) const
+  /// the source-independent work of the method, shared on the disk.
+  /// \tparam Disk a model of `MeasuredDisk`.
+  template <class Disk>
+  Error_code prepare(Disk& disk) const
   {
-    internal::shared_geodesic_solver<Method>(patch);
+    internal::shared_geodesic_solver<Method>(disk);
     return OK;
   }
 
-  /// stores in `distances[k]` the geodesic distance from `center` to `patch.border()[k]`.
+  /// stores in `distances[k]` the geodesic distance from `center` to `disk.border()[k]`
+  /// (0 for a vertex not reached).
   /// \return `OK`, `ERROR_WRONG_PARAMETER` (bad center), or
   ///         `ERROR_DISTANCE_COMPUTATION_FAILED` (a distance that is not positive and finite).
-  template <class Patch>
-  Error_code compute_border_distances(Patch& patch, std::size_t center,
+  template <class Disk>
+  Error_code compute_border_distances(Disk& disk, std::size_t center,
                                       std::vector<double>& distances) const
   {
     std::vector<double> values;
     const Error_code status =
-      internal::geodesic_distances<Method>(patch, std::vector<int>(1, static_cast<int>(center)), values);
+      internal::geodesic_distances<Method>(disk, std::vector<int>(1, static_cast<int>(center)), values);
     if(status != OK)
       return status;
-    distances.resize(patch.border().size());
+    distances.resize(disk.border().size());
+    bool reached = true;
     for(std::size_t k = 0; k < distances.size(); ++k)
     {
-      distances[k] = values[static_cast<std::size_t>(patch.border()[k])];
+      distances[k] = values[static_cast<std::size_t>(disk.border()[k])];
       if(!(distances[k] > 0.))
-        return ERROR_DISTANCE_COMPUTATION_FAILED;
+      {
+        distances[k] = 0.;
+        reached = false;
+      }
     }
-    return OK;
+    return reached ? OK : ERROR_DISTANCE_COMPUTATION_FAILED;
   }
 };
 

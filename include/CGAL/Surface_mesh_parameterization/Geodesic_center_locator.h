@@ -14,8 +14,8 @@
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
-#include <CGAL/Surface_mesh_parameterization/internal/center_selection.h>
-#include <CGAL/Surface_mesh_parameterization/internal/geodesic_solvers.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/center_selection.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/geodesic_solvers.h>
 
 #include <cstddef>
 #include <vector>
@@ -36,36 +36,30 @@ namespace Surface_mesh_parameterization {
 /// on the mirror (on the ellipse: the vertex between the two maxima).
 ///
 /// Cost: one multi-source distance computation. The method's precomputation is shared with
-/// a `Geodesic_border_distance` of the same `Method` on the same patch.
+/// a `Geodesic_border_distance` of the same `Method` on the same disk.
 ///
 /// \cgalModels `MeasuredCenterLocator`
 ///
-/// \tparam TriangleMesh a model of `FaceGraph`.
 /// \tparam Method `Fast_marching_geodesics` (default), `Dijkstra_geodesics`,
 ///         `Heat_method_geodesics<Mode>` or `Exact_geodesics`.
-template <class TriangleMesh, class Method = Fast_marching_geodesics>
+template <class Method = Fast_marching_geodesics>
 class Geodesic_center_locator
 {
 public:
   /// The geodesic method.
   typedef Method Geodesic_method;
 
-  /// stores in `center` the patch index of the maximum of the boundary geodesic distance.
+  /// stores in `center` the disk index of the maximum of the boundary geodesic distance.
   /// \return `OK`, `ERROR_NO_INTERIOR_VERTEX` or `ERROR_DISTANCE_COMPUTATION_FAILED`.
-  template <class Patch>
-  Error_code locate_center(Patch& patch, std::size_t& center) const
+  /// \tparam Disk a model of `MeasuredDisk`.
+  template <class Disk>
+  Error_code locate_center(Disk& disk, std::size_t& center) const
   {
-    if(patch.interior_vertices().empty())
+    if(disk.interior_vertices().empty())
       return ERROR_NO_INTERIOR_VERTEX;
     std::vector<double> values;
-    const Error_code status = internal::geodesic_distances<Method>(patch, patch.border(), values);
-    if(status != OK)
-      return status;
-    const int c = internal::argmax_with_tie_break(patch, values);
-    if(c < 0)
-      return ERROR_NO_INTERIOR_VERTEX;  // the distances are finite: the solver checked them
-    center = static_cast<std::size_t>(c);
-    return OK;
+    const Error_code status = internal::geodesic_distances<Method>(disk, disk.border(), values);
+    return internal::center_at_maximum(disk, status, values, center);
   }
 };
 

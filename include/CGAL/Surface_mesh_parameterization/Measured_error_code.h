@@ -38,17 +38,29 @@ static_assert(static_cast<int>(ERROR_WRONG_PARAMETER) == 9,
 inline constexpr Error_code ERROR_DEGENERATE_FACE = static_cast<Error_code>(10);
 /// A vertex coordinate is infinite or NaN.
 inline constexpr Error_code ERROR_NON_FINITE_COORDINATES = static_cast<Error_code>(11);
-/// Every vertex of the patch lies on its border loop: there is no interior vertex to
-/// serve as the center of the polar border map.
+/// Every vertex of the component lies on its border loop: there is no interior vertex (no
+/// unknown of the interior solve, no center for the polar border map).
 inline constexpr Error_code ERROR_NO_INTERIOR_VERTEX = static_cast<Error_code>(12);
 /// The border halfedge is null, or it is not a border halfedge of the mesh.
 inline constexpr Error_code ERROR_INVALID_BORDER_HALFEDGE = static_cast<Error_code>(13);
 /// The border distance policy could not measure the distance from the center to some
-/// border vertex (for example a straightest geodesic that does not reach it).
+/// border vertex (a straightest geodesic that does not reach it, a geodesic distance that
+/// is not positive and finite). The report of the call counts such vertices
+/// (`Parameterization_report::unreachable_border_vertices`).
 inline constexpr Error_code ERROR_DISTANCE_COMPUTATION_FAILED = static_cast<Error_code>(14);
-/// The polar border map is degenerate: two consecutive border vertices are seen in the
-/// same direction from the center (polar angles less than 1e-12 rad apart), or a border
-/// distance is not a positive finite number.
+/// A border polygon cannot be laid out:
+/// - the measured border's polar map is degenerate: two consecutive border vertices are seen
+///   in the same direction from the center (polar angles less than 1e-12 rad apart), or a
+///   border distance is not a positive finite number;
+/// - the conformal border cannot be built: a border edge has zero length, a target turning
+///   angle is not finite, or the polygon cannot close (the edge directions do not span the
+///   plane, or a closed edge length would not stay positive) even when blended to the convex
+///   end of its path;
+/// - a polygon has no extent to scale into \f$ [0,1]^2 \f$.
+///
+/// `Automatic_border` leaves out a member that cannot be built instead of failing. The
+/// message of `get_measured_error_message()` is "The polar border map is degenerate" for
+/// every cause.
 inline constexpr Error_code ERROR_DEGENERATE_BORDER_MAP = static_cast<Error_code>(15);
 
 /// @}

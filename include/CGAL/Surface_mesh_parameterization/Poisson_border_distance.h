@@ -29,16 +29,13 @@ namespace Surface_mesh_parameterization {
 ///
 /// Cost: one factorization of the spring Laplacian and one back-substitution. The
 /// factorization is that of the Laplacian grounded at a fixed vertex
-/// (`Parameterization_patch_3::factorize_spring_laplacian()`), which does not depend on the
-/// center: `prepare()` computes it, and the parameterizers of this package run `prepare()`
-/// concurrently with the center locator. The distance from the center then follows from
-/// one back-substitution (`Parameterization_patch_3::solve_spring_poisson()`); it equals the
+/// (`MeasuredDisk::factorize_spring_laplacian()`), which does not depend on the center:
+/// `prepare()` computes it, and the parameterizers of this package with `CGAL::Parallel_tag`
+/// run `prepare()` concurrently with the center locator. The distance from the center then
+/// follows from one back-substitution (`MeasuredDisk::solve_spring_poisson()`); it equals the
 /// solution of the system restricted to all vertices but the center.
 ///
 /// \cgalModels `MeasuredBorderDistance`
-///
-/// \tparam TriangleMesh a model of `FaceGraph`.
-template <class TriangleMesh>
 class Poisson_border_distance
 {
 public:
@@ -50,29 +47,30 @@ public:
   /// the exponent of the spring weights.
   double spring_exponent() const { return m_exponent; }
 
-  /// the center-independent work: factorizes the patch's grounded spring Laplacian.
-  template <class Patch>
-  Error_code prepare(Patch& patch) const
+  /// the center-independent work: factorizes the disk's grounded spring Laplacian.
+  /// \tparam Disk a model of `MeasuredDisk`.
+  template <class Disk>
+  Error_code prepare(Disk& disk) const
   {
-    return patch.factorize_spring_laplacian(m_exponent);
+    return disk.factorize_spring_laplacian(m_exponent);
   }
 
-  /// stores in `distances[k]` the Poisson distance from `center` to `patch.border()[k]`.
+  /// stores in `distances[k]` the Poisson distance from `center` to `disk.border()[k]`.
   /// \return `OK`, `ERROR_WRONG_PARAMETER` (non-finite exponent or bad center), or
   ///         `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
-  template <class Patch>
-  Error_code compute_border_distances(Patch& patch, std::size_t center,
+  template <class Disk>
+  Error_code compute_border_distances(Disk& disk, std::size_t center,
                                       std::vector<double>& distances) const
   {
-    if(!std::isfinite(m_exponent) || center >= patch.number_of_vertices())
+    if(!std::isfinite(m_exponent) || center >= disk.number_of_vertices())
       return ERROR_WRONG_PARAMETER;
     std::vector<double> values;
-    const Error_code status = patch.solve_spring_poisson(center, m_exponent, values);
+    const Error_code status = disk.solve_spring_poisson(center, m_exponent, values);
     if(status != OK)
       return status;
-    distances.resize(patch.border().size());
+    distances.resize(disk.border().size());
     for(std::size_t k = 0; k < distances.size(); ++k)
-      distances[k] = values[static_cast<std::size_t>(patch.border()[k])];
+      distances[k] = values[static_cast<std::size_t>(disk.border()[k])];
     return OK;
   }
 

@@ -13,8 +13,8 @@
 /// \file Poisson_center_locator.h
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/center_selection.h>
-#include <CGAL/Surface_mesh_parameterization/internal/poisson_distance.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/center_selection.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/poisson_distance.h>
 
 #include <cstddef>
 #include <vector>
@@ -32,37 +32,29 @@ namespace Surface_mesh_parameterization {
 /// maxima, the interior vertices are ranked by their distance to the mean position of the
 /// tied maxima, and the center is the nearest vertex that is alone at its distance
 /// (vertices at a shared distance are skipped; if every distance is shared, the smallest
-/// patch index among the nearest). A symmetry of the mesh permutes the vertices at each
+/// disk index among the nearest). A symmetry of the mesh permutes the vertices at each
 /// distance, so a vertex alone at its distance is fixed by every symmetry: on a
 /// mirror-symmetric mesh the center lies on the mirror whenever a vertex there allows it.
 /// The result is deterministic for a given mesh, and, since the map is invariant under
 /// rigid motions and uniform scaling, so is the center.
 ///
-/// Cost: one back-substitution with the patch's factorization of the interior cotangent
+/// Cost: one back-substitution with the disk's factorization of the interior cotangent
 /// Laplacian, which it creates when it is the first to need it; the discrete conformal
-/// interior solve of `Measured_conformal_parameterizer_3` reuses it.
+/// interior solve of `Conformal_parameterizer_3` reuses it.
 ///
 /// \cgalModels `MeasuredCenterLocator`
-///
-/// \tparam TriangleMesh a model of `FaceGraph`.
-template <class TriangleMesh>
 class Poisson_center_locator
 {
 public:
-  /// stores in `center` the patch index of the maximum of the boundary Poisson distance map.
+  /// stores in `center` the disk index of the maximum of the boundary Poisson distance map.
+  /// \tparam Disk a model of `MeasuredDisk`.
   /// \return `OK`, `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` or `ERROR_NO_INTERIOR_VERTEX`.
-  template <class Patch>
-  Error_code locate_center(Patch& patch, std::size_t& center) const
+  template <class Disk>
+  Error_code locate_center(Disk& disk, std::size_t& center) const
   {
     std::vector<double> values;
-    const Error_code status = internal::boundary_poisson_distance(patch, values);
-    if(status != OK)
-      return status;
-    const int c = internal::argmax_with_tie_break(patch, values);
-    if(c < 0)
-      return ERROR_NO_INTERIOR_VERTEX;  // the values are finite: the solves checked them
-    center = static_cast<std::size_t>(c);
-    return OK;
+    const Error_code status = internal::boundary_poisson_distance(disk, values);
+    return internal::center_at_maximum(disk, status, values, center);
   }
 };
 

@@ -13,12 +13,11 @@
 /// \file Straightest_geodesic_border_distance.h
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/internal/straightest_geodesic.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/straightest_geodesic.h>
 
 #include <boost/graph/graph_traits.hpp>
 
 #include <cstddef>
-#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -33,88 +32,55 @@ namespace Surface_mesh_parameterization {
 ///
 /// Such a curve may never reach `b` (it leaves through the border elsewhere, or closes on
 /// itself; the paper's Fig. 2): then the call fails with `ERROR_DISTANCE_COMPUTATION_FAILED`,
-/// and `last_failure()` says which border vertex could not be reached and how many could
-/// not. A wrong distance is never returned. On flat meshes the curve is the straight segment,
-/// so every border vertex visible from the center is reached with its Euclidean distance.
-///
-/// The record of the last call is shared by copies of the policy (so it can be read from
-/// the object given to a parameterizer's constructor).
+/// the distance of every vertex not reached is 0, and the parameterizers' report counts them
+/// (`Parameterization_report::unreachable_border_vertices`; its `border_distances` show which).
+/// A wrong distance is never returned. On flat meshes the curve is the straight segment, so
+/// every border vertex visible from the center is reached with its Euclidean distance.
 ///
 /// \cgalModels `MeasuredBorderDistance`
-///
-/// \tparam TriangleMesh a model of `FaceGraph`.
-template <class TriangleMesh>
 class Straightest_geodesic_border_distance
 {
 public:
-  /// Vertex type of the mesh.
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-
-  /// What the last call could not do.
-  struct Failure
+  /// the adjacency of the disk, shared on the disk.
+  /// \tparam Disk a model of `MeasuredDisk`.
+  template <class Disk>
+  Error_code prepare(Disk& disk) const
   {
-    /// number of border vertices that could not be reached (0: the call succeeded)
-    std::size_t unreachable = 0;
-    /// the first of them along the border loop
-    vertex_descriptor vertex = boost::graph_traits<TriangleMesh>::null_vertex();
-    /// its position in the border loop (`patch.border()` order)
-    std::size_t border_index = 0;
-  };
-
-  Straightest_geodesic_border_distance() : m_failure(std::make_shared<Failure>()) { }
-
-  /// the adjacency of the patch, shared on the patch.
-  template <class Patch>
-  Error_code prepare(Patch& patch) const
-  {
-    patch.template shared_object<Tracer<Patch> >();
+    disk.template shared_object<Tracer>();
     return OK;
   }
 
   /// stores in `distances[k]` the length of the straightest geodesic from `center` to
-  /// `patch.border()[k]`.
+  /// `disk.border()[k]` (0 when it does not reach it).
   /// \return `OK`, `ERROR_WRONG_PARAMETER` (bad center), or
-  ///         `ERROR_DISTANCE_COMPUTATION_FAILED` when some border vertex is not reached
-  ///         (see `last_failure()`).
-  template <class Patch>
-  Error_code compute_border_distances(Patch& patch, std::size_t center,
-                                      std::vector<double>& distances) const
+  ///         `ERROR_DISTANCE_COMPUTATION_FAILED` when some border vertex is not reached.
+  template <class Disk>
+  Error_code compute_border_distances(Disk& disk, std::size_t center, std::vector<double>& distances) const
   {
-    *m_failure = Failure();
-    if(center >= patch.number_of_vertices())
+    if(center >= disk.number_of_vertices())
       return ERROR_WRONG_PARAMETER;
-    const internal::Straightest_geodesic_tracer& tracer = patch.template shared_object<Tracer<Patch> >().tracer;
-    const std::vector<int>& border = patch.border();
+    const internal::Straightest_geodesic_tracer& tracer = disk.template shared_object<Tracer>().tracer;
+    const std::vector<int>& border = disk.border();
     distances.assign(border.size(), 0.);
+    bool reached = true;
     for(std::size_t k = 0; k < border.size(); ++k)
     {
       double length = 0.;
-      if(!tracer.trace(static_cast<int>(center), border[k], length) || !(length > 0.))
-      {
-        if(m_failure->unreachable++ == 0)
-        {
-          m_failure->vertex = patch.vertex(static_cast<std::size_t>(border[k]));
-          m_failure->border_index = k;
-        }
-        continue;
-      }
-      distances[k] = length;
+      if(tracer.trace(static_cast<int>(center), border[k], length) && length > 0.)
+        distances[k] = length;
+      else
+        reached = false;
     }
-    return (m_failure->unreachable == 0) ? OK : ERROR_DISTANCE_COMPUTATION_FAILED;
+    return reached ? OK : ERROR_DISTANCE_COMPUTATION_FAILED;
   }
 
-  /// the border vertices the last call could not reach.
-  const Failure& last_failure() const { return *m_failure; }
-
 private:
-  template <class Patch>
   struct Tracer
   {
-    explicit Tracer(const Patch& patch) : tracer(patch.points(), patch.faces_indices()) { }
+    template <class Disk>
+    explicit Tracer(const Disk& disk) : tracer(disk.points(), disk.faces_indices()) { }
     internal::Straightest_geodesic_tracer tracer;
   };
-
-  std::shared_ptr<Failure> m_failure;
 };
 
 } // namespace Surface_mesh_parameterization

@@ -15,10 +15,11 @@
 /// the heat method or exact geodesics, behind one call.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
-#include <CGAL/Surface_mesh_parameterization/internal/geodesic_solvers.h>
-#include <CGAL/Surface_mesh_parameterization/internal/source_components.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/geodesic_solvers.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/source_components.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -61,7 +62,7 @@ Error_code geodesic_distance_map(const TriangleMesh& tm,
                                                 get_const_property_map(vertex_point, tm));
   return internal::distance_map_over_source_components<Solver>(
     tm, sources, vpm, distance_map,
-    [](Parameterization_patch_3<TriangleMesh, Solver>& patch, const std::vector<int>& local_sources,
+    [](internal::Disk<TriangleMesh, Solver>& patch, const std::vector<int>& local_sources,
        std::vector<double>& values) {
       return internal::geodesic_distances<Method>(patch, local_sources, values);
     });

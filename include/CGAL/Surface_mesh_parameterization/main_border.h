@@ -28,6 +28,54 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
+namespace internal {
+
+// A border loop: its length, its number of edges, and the border halfedge whose source comes
+// first in vertices(tm).
+template <class HalfedgeDescriptor>
+struct Border_loop
+{
+  HalfedgeDescriptor first;
+  double length = 0.;
+  std::size_t size = 0, first_rank = 0;
+};
+
+// |q - p|, hypot-like, so that no square underflows or overflows at extreme scales.
+template <class Point>
+double scaled_distance(const Point& p, const Point& q)
+{
+  const double dx = CGAL::to_double(q.x()) - CGAL::to_double(p.x());
+  const double dy = CGAL::to_double(q.y()) - CGAL::to_double(p.y());
+  const double dz = CGAL::to_double(q.z()) - CGAL::to_double(p.z());
+  const double m = (std::max)({std::abs(dx), std::abs(dy), std::abs(dz)});
+  return (m > 0.) ? m * std::sqrt((dx / m) * (dx / m) + (dy / m) * (dy / m) + (dz / m) * (dz / m)) : 0.;
+}
+
+template <class TriangleMesh, class RankMap, class SeenMap>
+Border_loop<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor>
+walk_border_loop(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h,
+                 const RankMap& rank, SeenMap& seen)
+{
+  Border_loop<typename boost::graph_traits<TriangleMesh>::halfedge_descriptor> loop;
+  loop.first = h;
+  loop.first_rank = get(rank, source(h, tm));
+  const auto vpm = get(CGAL::vertex_point, tm);
+  for(auto b : halfedges_around_face(h, tm))
+  {
+    put(seen, b, true);
+    loop.length += scaled_distance(get(vpm, source(b, tm)), get(vpm, target(b, tm)));
+    ++loop.size;
+    if(get(rank, source(b, tm)) < loop.first_rank)
+    {
+      loop.first_rank = get(rank, source(b, tm));
+      loop.first = b;
+    }
+  }
+  return loop;
+}
+
+} // namespace internal
+
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
 ///
 /// the border loop to parameterize: a border halfedge of the longest border loop of `tm`,
@@ -58,49 +106,17 @@ main_border(const TriangleMesh& tm)
   std::size_t r = 0;
   for(vertex_descriptor v : vertices(tm))
     put(rank, v, r++);
-
-  struct Loop
-  {
-    halfedge_descriptor first;  // the border halfedge whose source has the smallest rank
-    double length = 0.;
-    std::size_t size = 0, first_rank = 0;
-  };
   auto seen = get(CGAL::dynamic_halfedge_property_t<bool>(), tm);
   for(halfedge_descriptor h : halfedges(tm))
     put(seen, h, false);
-  const auto vpm = get(CGAL::vertex_point, tm);
-  std::vector<Loop> loops;
+  std::vector<internal::Border_loop<halfedge_descriptor> > loops;
   for(halfedge_descriptor h : halfedges(tm))
-  {
-    if(!is_border(h, tm) || get(seen, h))
-      continue;
-    Loop loop;
-    loop.first = h;
-    loop.first_rank = get(rank, source(h, tm));
-    for(halfedge_descriptor b : halfedges_around_face(h, tm))
-    {
-      put(seen, b, true);
-      const auto& p = get(vpm, source(b, tm));
-      const auto& q = get(vpm, target(b, tm));
-      const double dx = CGAL::to_double(q.x()) - CGAL::to_double(p.x());
-      const double dy = CGAL::to_double(q.y()) - CGAL::to_double(p.y());
-      const double dz = CGAL::to_double(q.z()) - CGAL::to_double(p.z());
-      // hypot-like, so that no square underflows or overflows at extreme scales
-      const double m = (std::max)({std::abs(dx), std::abs(dy), std::abs(dz)});
-      loop.length += (m > 0.) ? m * std::sqrt((dx / m) * (dx / m) + (dy / m) * (dy / m) + (dz / m) * (dz / m)) : 0.;
-      ++loop.size;
-      if(get(rank, source(b, tm)) < loop.first_rank)
-      {
-        loop.first_rank = get(rank, source(b, tm));
-        loop.first = b;
-      }
-    }
-    loops.push_back(loop);
-  }
+    if(is_border(h, tm) && !get(seen, h))
+      loops.push_back(internal::walk_border_loop(tm, h, rank, seen));
   if(loops.empty())
     return {boost::graph_traits<TriangleMesh>::null_halfedge(), 0.};
-  const Loop* best = &loops.front();
-  for(const Loop& l : loops)
+  const auto* best = &loops.front();
+  for(const auto& l : loops)
   {
     const double longer = (std::max)(l.length, best->length);
     const bool tied = std::abs(l.length - best->length) <= 1e-9 * longer;

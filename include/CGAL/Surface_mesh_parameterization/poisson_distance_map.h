@@ -15,9 +15,10 @@
 /// and the Poisson distance map from a set of source vertices (PDM).
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
-#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
-#include <CGAL/Surface_mesh_parameterization/internal/poisson_distance.h>
-#include <CGAL/Surface_mesh_parameterization/internal/source_components.h>
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/poisson_distance.h>
+#include <CGAL/Surface_mesh_parameterization/internal/distances/source_components.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -43,7 +44,7 @@ struct Solver_from_np
   typedef typename internal_np::Lookup_named_param_def<internal_np::sparse_linear_solver_t,
                                                        NamedParameters,
                                                        Default>::type Given;
-  typedef typename Get_solver_traits<Given>::type type;
+  typedef Default_or_sparse_cholesky_traits<Given> type;
 };
 
 } // namespace internal
@@ -56,7 +57,7 @@ struct Solver_from_np
 /// cotangent weights \f$ w_{ij} = (\cot\alpha_{ij} + \cot\beta_{ij})/2 \f$ normalised to sum 1
 /// (\f$ \Delta f(v_i) = \sum_j w_{ij} (f_j - f_i) / \sum_j w_{ij} \f$) and \f$ g(v_i) \f$ the
 /// mean length of the edges at \f$ v_i \f$. Other border loops (holes) are filled
-/// virtually (see `Parameterization_patch_3::build_disk()`), so their vertices are interior. The system is solved as the symmetric
+/// virtually (see `Conformal_parameterizer_3::parameterize()`), so their vertices are interior. The system is solved as the symmetric
 /// positive definite \f$ L_{II} f_I = (d g)_I \f$ with a sparse Cholesky factorization.
 ///
 /// The map is 0 on the border loop and positive inside; it scales like lengths and is
@@ -74,7 +75,7 @@ struct Solver_from_np
 ///        `get(CGAL::vertex_point, tm)`); `sparse_linear_solver`, whose *type* (a model of
 ///        `SparseLinearAlgebraWithFactorTraits_d`, default `Default_sparse_cholesky_traits`)
 ///        selects the solver (a fresh object of that type is used).
-/// \return `OK`, or the first failure of `Parameterization_patch_3::build_disk()`, or
+/// \return `OK`, or the first failure of `Conformal_parameterizer_3::parameterize()`, or
 ///         `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`.
 template <class TriangleMesh, class VertexDistanceMap,
           class NamedParameters = parameters::Default_named_parameters>
@@ -89,7 +90,7 @@ Error_code boundary_poisson_distance_map(
 
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(vertex_point, tm));
-  Parameterization_patch_3<TriangleMesh, Solver> patch;
+  internal::Disk<TriangleMesh, Solver> patch;
   Error_code status = patch.build_disk(tm, bhd, vpm);
   if(status != OK)
     return status;
@@ -143,7 +144,7 @@ Error_code poisson_distance_map(const TriangleMesh& tm,
                                                 get_const_property_map(vertex_point, tm));
   return internal::distance_map_over_source_components<Solver>(
     tm, sources, vpm, distance_map,
-    [spring_exponent](Parameterization_patch_3<TriangleMesh, Solver>& patch,
+    [spring_exponent](internal::Disk<TriangleMesh, Solver>& patch,
                       const std::vector<int>& local_sources, std::vector<double>& values) {
       return internal::spring_poisson_distance(patch, local_sources, spring_exponent, values);
     });

@@ -1,0 +1,97 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_AUTOMATIC_BORDER_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_AUTOMATIC_BORDER_H
+
+/// \file Automatic_border.h
+
+#include <CGAL/Surface_mesh_parameterization/Conformal_border.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_border.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/borders/border_search.h>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+///
+/// The border policy that picks the best border of a family by the angle distortion of the
+/// discrete conformal map it gives. The members of the family (`Border_family`) are the
+/// circle (`Circular_border`), the measured border (`Measured_border` with the given policies)
+/// and the conformal border (`Conformal_border`); each member is a path of borders from the
+/// member itself to a convex border (its *blends*). Every candidate costs two
+/// back-substitutions with the one factorization of \f$ L_{II} \f$, a validity check and an
+/// evaluation of the angle distortion. The search, deterministic:
+/// 1. the circle and the conformal border (at its smallest simple blend toward the circle:
+///    0 unless the conformal polygon self-intersects), in one batch;
+/// 2. only when the conformal layout is not one-to-one: the measured member (the policies'
+///    center and distances; the spring Laplacian of the Poisson distance map is factorized
+///    only when the `BorderDistance` policy asks for it). On the 23 real disks of the
+///    benchmark (`benchmark/README.md`) the measured member never had less angle distortion
+///    than a valid conformal layout, and building it costs a center search and a distance
+///    map;
+/// 3. for each member whose own layout is not one-to-one but whose angle distortion (of the
+///    invalid layout) is lower than the best valid one so far, the smallest valid blend
+///    toward its convex border, by five bisection steps (all such members in one batch per
+///    step); along a member the distortion grows as the border moves toward the convex one,
+///    so the smallest valid blend is the member's best.
+///
+/// The valid layout of lowest angle distortion is kept; when none is valid,
+/// `Conformal_parameterizer_3` repairs (`BLEND_TOWARD_CIRCLE`). The circle is convex and the
+/// conformal border at blend 1 is convex, so the search always has a simple, convex end
+/// point. The report lists every layout tried (`Parameterization_report::border_candidates`).
+///
+/// \cgalModels `BorderPolicy`
+///
+/// \tparam CenterLocator a model of `MeasuredCenterLocator` for the measured member.
+///         %Default: `Poisson_center_locator`.
+/// \tparam BorderDistance a model of `MeasuredBorderDistance` for the measured member.
+///         %Default: `Poisson_border_distance`.
+template <class CenterLocator = Poisson_center_locator, class BorderDistance = Poisson_border_distance>
+class Automatic_border
+{
+public:
+  /// The policy of the measured member
+  typedef Measured_border<CenterLocator, BorderDistance> Measured_member;
+
+  /// creates the policy with the given measured member.
+  explicit Automatic_border(Measured_member measured = Measured_member()) : m_measured(measured) { }
+
+  /// the policy of the measured member.
+  const Measured_member& measured_border() const { return m_measured; }
+
+  /// \cond SKIP_IN_MANUAL
+  static constexpr bool searches = true;
+
+  // the conformal member (a member that cannot be built is left out, unless the solver failed)
+  template <class Step>
+  Error_code build(Step& step) const
+  {
+    const Error_code status = Conformal_border().build(step);
+    return status == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM ? status : OK;
+  }
+
+  template <class Step, class Evaluator>
+  Error_code choose(Step& step, Evaluator& evaluator) const
+  {
+    return internal::automatic_search(evaluator, [&] { return m_measured.build(step); }, step.report,
+                                      step.repairable);
+  }
+  /// \endcond
+
+private:
+  Measured_member m_measured;
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_AUTOMATIC_BORDER_H

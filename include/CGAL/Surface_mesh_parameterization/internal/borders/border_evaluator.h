@@ -1,0 +1,169 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_BORDERS_BORDER_EVALUATOR_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_BORDERS_BORDER_EVALUATOR_H
+
+// A candidate layout is a border of the family (border_members.h) and an interior: the
+// discrete conformal map (two back-substitutions of the disk's factorization of L_II;
+// candidates are solved in batches, one multi-column solve per batch) or the mean value map
+// (positive weights: one-to-one for a convex border, by Floater's theorem; the disk's mean
+// value system, factorized on first use). The evaluator records every candidate and keeps the
+// valid one of lowest angle distortion.
+
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/borders/border_members.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/angle_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// One candidate tried.
+struct Border_trial
+{
+  Border_family member;
+  double blend;
+  bool mean_value;            // mean value interior (rather than the discrete conformal map)
+  bool valid;                 // one-to-one
+  std::size_t flipped_faces;  // real faces not positively oriented (0 when there is no layout)
+  double objective;           // angle distortion; +infinity when not valid
+  double estimate;            // angle distortion of the layout even when not valid (+infinity
+                              // when there is no layout: the border could not be built or solved)
+};
+
+// A layout: border UVs (disk.border() order) and interior UVs (interior_vertices() order).
+struct Border_solution
+{
+  std::vector<Eigen::Vector2d> border_uv;
+  std::vector<double> u, v;
+};
+
+// UV of every disk vertex from a layout.
+template <class Disk>
+void assemble_uv(const Disk& disk, const Border_solution& s, std::vector<Eigen::Vector2d>& uv)
+{
+  uv.assign(disk.number_of_vertices(), Eigen::Vector2d::Zero());
+  for(std::size_t k = 0; k < s.border_uv.size(); ++k)
+    uv[static_cast<std::size_t>(disk.border()[k])] = s.border_uv[k];
+  const std::vector<int>& interior = disk.interior_vertices();
+  for(std::size_t r = 0; r < interior.size(); ++r)
+    uv[static_cast<std::size_t>(interior[r])] = Eigen::Vector2d(s.u[r], s.v[r]);
+}
+
+template <class Disk>
+class Border_evaluator
+{
+public:
+  typedef std::pair<Border_family, double> Request;
+
+  Border_evaluator(Disk& disk, const Border_members& members)
+    : m_disk(disk), m_members(members), m_objective(disk_angle_distortion(disk))
+  { }
+
+  // evaluates the requested borders with one interior; returns their trials
+  std::vector<Border_trial> evaluate(const std::vector<Request>& batch, bool mean_value)
+  {
+    std::vector<Border_solution> solutions(batch.size());
+    std::vector<bool> placed(batch.size());
+    for(std::size_t i = 0; i < batch.size(); ++i)
+      placed[i] = m_members.border(batch[i].first, batch[i].second, solutions[i].border_uv);
+    const bool solved = solve(placed, solutions, mean_value);
+    std::vector<Border_trial> result;
+    for(std::size_t i = 0; i < batch.size(); ++i)
+    {
+      const Border_trial trial = judge(batch[i], mean_value, solved && placed[i], solutions[i]);
+      m_trials.push_back(trial);
+      result.push_back(trial);
+      if(trial.valid && trial.objective < best_objective())
+      {
+        m_best = static_cast<int>(m_trials.size()) - 1;
+        m_best_solution = std::move(solutions[i]);
+      }
+    }
+    return result;
+  }
+
+  const std::vector<Border_trial>& trials() const { return m_trials; }
+  const Border_members& members() const { return m_members; }
+  // index of the kept trial, -1 when none is valid
+  int best() const { return m_best; }
+  double best_objective() const
+  {
+    return m_best < 0 ? std::numeric_limits<double>::infinity() : m_trials[static_cast<std::size_t>(m_best)].objective;
+  }
+  const Border_solution& best_solution() const { return m_best_solution; }
+
+private:
+  Border_trial judge(const Request& request, bool mean_value, bool laid_out, const Border_solution& solution) const
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    Border_trial trial{request.first, request.second, mean_value, false, 0, inf, inf};
+    if(!laid_out)
+      return trial;
+    std::vector<Eigen::Vector2d> uv;
+    assemble_uv(m_disk, solution, uv);
+    trial.estimate = m_objective(uv);
+    trial.flipped_faces = count_flips(m_disk.faces_indices(), m_disk.number_of_real_faces(), uv);
+    trial.valid = trial.flipped_faces == 0 && border_curves_are_valid(m_disk, uv);
+    if(trial.valid)
+      trial.objective = trial.estimate;
+    return trial;
+  }
+
+  // Every placed border's interior, with one multi-column solve of the interior system
+  // (cotangent weights) or of the mean value system.
+  bool solve(const std::vector<bool>& placed, std::vector<Border_solution>& solutions, bool mean_value)
+  {
+    typename Disk::Engine* system = mean_value ? m_disk.systems().mean_value() : m_disk.systems().interior();
+    if(system == nullptr)
+      return false;
+    const Eigen::Index m = static_cast<Eigen::Index>(m_disk.border().size());
+    Eigen::MatrixXd values = Eigen::MatrixXd::Zero(m, 2 * static_cast<Eigen::Index>(solutions.size()));
+    for(std::size_t i = 0; i < solutions.size(); ++i)
+      for(Eigen::Index k = 0; placed[i] && k < m; ++k)
+      {
+        values(k, 2 * static_cast<Eigen::Index>(i)) = solutions[i].border_uv[static_cast<std::size_t>(k)].x();
+        values(k, 2 * static_cast<Eigen::Index>(i) + 1) = solutions[i].border_uv[static_cast<std::size_t>(k)].y();
+      }
+    Eigen::MatrixXd rhs, x;
+    system->rhs_from_fixed(values, rhs);
+    if(system->solve(rhs, x) != OK)
+      return false;
+    for(std::size_t i = 0; i < solutions.size(); ++i)
+    {
+      const Eigen::Index c = 2 * static_cast<Eigen::Index>(i);
+      solutions[i].u.assign(x.col(c).data(), x.col(c).data() + x.rows());
+      solutions[i].v.assign(x.col(c + 1).data(), x.col(c + 1).data() + x.rows());
+    }
+    return true;
+  }
+
+  Disk& m_disk;
+  const Border_members& m_members;
+  Angle_distortion m_objective;
+  std::vector<Border_trial> m_trials;
+  int m_best = -1;
+  Border_solution m_best_solution;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_BORDERS_BORDER_EVALUATOR_H
