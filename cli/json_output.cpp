@@ -7,11 +7,18 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// The sections of the JSON output that read plain data (json_output.h). No CGAL here.
+// The JSON output (json_output.h): the document of a failed run, and the sections of the
+// document of a successful run. No CGAL here but the library's report.
 
 #include "json_output.h"
+#include "summary.h"
+#include "text_output.h"
+
+#include <cstddef>
 
 namespace mbp_cli {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
 
 namespace {
 
@@ -58,20 +65,8 @@ void write_center(Json_writer& j, const Uv_layout& layout)
   j.end_object();
 }
 
-} // namespace
-
-std::string json_failure(const std::string& message, int status, int error_code)
-{
-  Json_writer j;
-  j.begin_object().member("error", message).member("code", status);
-  if(error_code == 0)
-    j.null_member("error_code");
-  else
-    j.member("error_code", error_code);
-  j.end_object();
-  return j.text();
-}
-
+// the members from the command line: input, generated_mesh, mesh, output, svg, solver,
+// center_locator, border_distance
 void write_command_line(Json_writer& j, const Run_facts& f)
 {
   const Options& o = f.options;
@@ -91,6 +86,8 @@ void write_command_line(Json_writer& j, const Run_facts& f)
   j.member("border_distance", o.distance);
 }
 
+// the members on the mesh and its layout: vertices, faces, isolated_vertices, seams,
+// seam_edges, automatic_seams, uvs, border, center
 void write_mesh(Json_writer& j, const Run_facts& f)
 {
   const Uv_layout& layout = f.result.layout;
@@ -102,11 +99,12 @@ void write_mesh(Json_writer& j, const Run_facts& f)
   j.begin_object("border")
      .member("vertices", f.result.border_vertices)
      .member("length", f.result.border_length)
-     .member("convex", f.result.border_convex)
+     .member("convex", f.result.report.border_convex)
      .end_object();
   write_center(j, layout);
 }
 
+// the times measured by the program: io_times
 void write_io_times(Json_writer& j, const Run_facts& f)
 {
   j.begin_object("io_times")
@@ -116,6 +114,7 @@ void write_io_times(Json_writer& j, const Run_facts& f)
      .end_object();
 }
 
+// the distortion: quality
 void write_quality(Json_writer& j, const Quality& q)
 {
   j.begin_object("quality")
@@ -129,6 +128,108 @@ void write_quality(Json_writer& j, const Quality& q)
      .member("area_distortion_max", q.area_distortion_max)
      .member("flipped_faces", q.flipped_faces)
      .end_object();
+}
+
+// the layouts tried and the one kept: border_choice
+void write_border_choice(Json_writer& j, const Run_facts& f)
+{
+  const SMP::Parameterization_report& r = f.result.report;
+  j.begin_object("border_choice").member("mode", border_name(f.options.border));
+  if(r.chosen_candidate >= 0)
+  {
+    const SMP::Border_candidate& c = r.border_candidates[static_cast<std::size_t>(r.chosen_candidate)];
+    j.begin_object("chosen")
+       .member("index", r.chosen_candidate)
+       .member("kind", candidate_kind(c, f.options.distance))
+       .member("blend", c.blend)
+       .member("mean_value_interior", c.mean_value_interior)
+       .member("angle_distortion", c.objective)
+       .end_object();
+  }
+  else
+    j.null_member("chosen");
+  j.begin_array("candidates", false);
+  for(const SMP::Border_candidate& c : r.border_candidates)
+    j.begin_object()
+       .member("kind", candidate_kind(c, f.options.distance))
+       .member("blend", c.blend)
+       .member("mean_value_interior", c.mean_value_interior)
+       .member("valid", c.valid)
+       .member("angle_distortion", c.objective)  // null when not valid
+       .end_object();
+  j.end_array();
+  j.end_object();
+}
+
+// the stages of the parameterization: times
+void write_times(Json_writer& j, const SMP::Parameterization_report& r)
+{
+  j.begin_object("times")
+     .member("preparation", r.preparation_seconds)
+     .member("center", r.center_seconds)
+     .member("distances", r.distance_seconds)
+     .member("border_map", r.border_map_seconds)
+     .member("conformal_border", r.conformal_border_seconds)
+     .member("interior", r.interior_seconds)  // every layout tried before repair
+     .member("output", r.output_seconds)
+     .member("total", r.total_seconds)
+     .end_object();
+}
+
+// the repair (`enabled`: not --no-repair): repair
+void write_repair(Json_writer& j, const SMP::Parameterization_report& r, bool enabled)
+{
+  j.begin_object("repair")
+     .member("enabled", enabled)
+     .member("flipped_faces_before", r.flipped_faces_before_repair)
+     .member("repaired", r.repaired)
+     .member("blend", r.blend)
+     .member("interior", r.mean_value_interior ? "mean value coordinates" : "discrete conformal")
+     .member("candidates", r.repair_candidates)
+     .member("seconds", r.repair_seconds)
+     .end_object();
+}
+
+// the solver's work: statistics
+void write_statistics(Json_writer& j, const SMP::Solver_statistics& s)
+{
+  j.begin_object("statistics")
+     .member("factorizations", s.factorizations)
+     .member("back_substitutions", s.back_substitutions)
+     .member("factorization_seconds", s.factorization_seconds)
+     .member("back_substitution_seconds", s.back_substitution_seconds)
+     .end_object();
+}
+
+} // namespace
+
+std::string json_failure(const std::string& message, int status, int error_code)
+{
+  Json_writer j;
+  j.begin_object().member("error", message).member("code", status);
+  if(error_code == 0)
+    j.null_member("error_code");
+  else
+    j.member("error_code", error_code);
+  j.end_object();
+  return j.text();
+}
+
+std::string json_document(const Run_facts& f)
+{
+  const SMP::Parameterization_report& r = f.result.report;
+  Json_writer j;
+  j.begin_object();
+  write_command_line(j, f);
+  write_border_choice(j, f);
+  write_mesh(j, f);
+  write_times(j, r);
+  write_io_times(j, f);
+  write_repair(j, r, f.options.repair);
+  write_statistics(j, r.statistics);
+  write_quality(j, f.result.quality);
+  j.end_object();
+  return j.text();
 }
 
 } // namespace mbp_cli

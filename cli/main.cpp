@@ -36,6 +36,7 @@
 #include "obj_writer.h"
 #include "options.h"
 #include "run.h"
+#include "summary.h"
 #include "svg_writer.h"
 
 #include <chrono>
@@ -163,7 +164,7 @@ void print_notes(const Run_facts& f)
   if(r.quality.flipped_faces > 0)
     std::cerr << "warning: " << r.quality.flipped_faces << " of " << r.quality.number_of_faces
               << " faces are flipped in the UV layout: the map is not one-to-one"
-              << (r.border_convex ? "" : " (the measured border is not convex)") << "\n";
+              << (r.report.border_convex ? "" : " (the measured border is not convex)") << "\n";
 }
 
 } // namespace
@@ -213,6 +214,6 @@ int main(int argc, char** argv)
     return fail_with(write_problem, exit_failure, options.json);
   facts.write_seconds = seconds_since(start);
   print_notes(facts);
-  std::cout << (options.json ? facts.result.report->json(facts) : facts.result.report->summary(facts));
+  std::cout << (options.json ? json_document(facts) : summary_line(facts));
   return EXIT_SUCCESS;
 }

@@ -10,6 +10,7 @@
 // The OBJ output of the measured_parameterization program (obj_writer.h). No CGAL here.
 
 #include "obj_writer.h"
+#include "summary.h"
 
 #include <array>
 #include <cstddef>
@@ -36,7 +37,7 @@ void write_header(Buffered_writer& out, const Run_facts& f)
   const Seams& seams = f.result.seams;
   out << "# UV layout by measured_parameterization: measured boundary parameterization (center: "
       << o.center_name() << ", border distances: " << o.distance << "), discrete conformal interior\n";
-  out << "# border: --border=" << border_name(o.border) << ", kept " << f.result.report->kept_border(o.distance)
+  out << "# border: --border=" << border_name(o.border) << ", kept " << kept_border(f.result.report, o.distance)
       << "\n";
   out << "# input: " << one_line(f.generated ? f.mesh_name : o.input) << "\n";
   if(seams.cut)

@@ -9,19 +9,23 @@
 
 // The run of the measured_parameterization program (run.h): the only file that calls the
 // library. The mesh is a CGAL::Surface_mesh; a mesh that is not a disk is cut along seams (a
-// CGAL::Seam_mesh over it) and parameterized with Measured_conformal_parameterizer_3, for the
-// solver traits of --solver and the border of --border; the helpers mesh_input.h and
-// seam_selection.h read and check the mesh and the seams.
+// CGAL::Seam_mesh over it) and parameterized with Conformal_parameterizer_3, for the solver
+// traits of --solver and the border policy of --border (Automatic_border, Conformal_border,
+// Measured_border or Circular_border, chosen at run time among the instantiated policies); the
+// helpers mesh_input.h and seam_selection.h read and check the mesh and the seams.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Seam_mesh.h>
 
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
+#include <CGAL/Surface_mesh_parameterization/Disk_seams_report.h>
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_center_locator.h>
-#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/Straightest_geodesic_border_distance.h>
@@ -32,18 +36,16 @@
 #include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
 #endif
 
-#include "json_output.h"
 #include "mesh_input.h"
 #include "run.h"
 #include "seam_selection.h"
-#include "summary.h"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <limits>
+#include <iterator>
 #include <set>
 #include <string>
 #include <utility>
@@ -72,6 +74,11 @@ namespace {
 
 using mbp_cli::Failure;
 
+// The library's test of a degenerate face, 2A <= threshold * (longest edge)^2, as documented
+// for ERROR_DEGENERATE_FACE (the library has no public constant for it): for the message that
+// names the face.
+const double degenerate_face_threshold = 1e-12;
+
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -82,6 +89,14 @@ std::size_t input_index(const Mesh&, vertex_descriptor v) { return std::size_t(v
 std::size_t input_index(const Seam_mesh& seam_mesh, boost::graph_traits<Seam_mesh>::vertex_descriptor v)
 {
   return std::size_t(target(halfedge_descriptor(v), seam_mesh.mesh()));
+}
+
+// The input vertex of the vertex at `position` in the range `vertices(tm)` (how the library's
+// reports name vertices).
+template <class TriangleMesh>
+std::size_t input_index_at(const TriangleMesh& tm, std::size_t position)
+{
+  return input_index(tm, *std::next(vertices(tm).begin(), static_cast<std::ptrdiff_t>(position)));
 }
 
 // The vertex of the parameterized mesh of input vertex `v`, which is not on a seam.
@@ -105,22 +120,22 @@ public:
   explicit Command_line_center_locator(const std::string& name = "poisson") : m_name(name) { }
   explicit Command_line_center_locator(vertex_descriptor v) : m_fixed(v), m_name("vertex") { }
 
-  template <class Patch>
-  SMP::Error_code locate_center(Patch& patch, std::size_t& center) const
+  template <class Disk>
+  SMP::Error_code locate_center(Disk& disk, std::size_t& center) const
   {
     if(m_name == "vertex")
-      return m_fixed.locate_center(patch, center);
+      return m_fixed.locate_center(disk, center);
     if(m_name == "geodesic:fast-marching")
-      return SMP::Geodesic_center_locator<TriangleMesh, SMP::Fast_marching_geodesics>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<SMP::Fast_marching_geodesics>().locate_center(disk, center);
     if(m_name == "geodesic:dijkstra")
-      return SMP::Geodesic_center_locator<TriangleMesh, SMP::Dijkstra_geodesics>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<SMP::Dijkstra_geodesics>().locate_center(disk, center);
     if(m_name == "geodesic:heat")
-      return SMP::Geodesic_center_locator<TriangleMesh, Heat>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<Heat>().locate_center(disk, center);
     if(m_name == "geodesic:heat-idt")
-      return SMP::Geodesic_center_locator<TriangleMesh, Heat_idt>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<Heat_idt>().locate_center(disk, center);
     if(m_name == "geodesic:exact")
-      return SMP::Geodesic_center_locator<TriangleMesh, SMP::Exact_geodesics>().locate_center(patch, center);
-    return SMP::Poisson_center_locator<TriangleMesh>().locate_center(patch, center);
+      return SMP::Geodesic_center_locator<SMP::Exact_geodesics>().locate_center(disk, center);
+    return SMP::Poisson_center_locator().locate_center(disk, center);
   }
 
 private:
@@ -130,76 +145,43 @@ private:
 
 // The border distance of the command line (a model of `MeasuredBorderDistance`), chosen at
 // run time: Poisson, a geodesic method, or straightest geodesics.
-template <class TriangleMesh>
 class Command_line_border_distance
 {
 public:
-  typedef typename SMP::Straightest_geodesic_border_distance<TriangleMesh>::Failure Straightest_failure;
-
   explicit Command_line_border_distance(const std::string& name = "poisson") : m_name(name) { }
 
-  template <class Patch>
-  SMP::Error_code prepare(Patch& patch) const
+  template <class Disk>
+  SMP::Error_code prepare(Disk& disk) const
   {
-    return dispatch([&patch](const auto& policy) { return policy.prepare(patch); });
+    return dispatch([&disk](const auto& policy) { return policy.prepare(disk); });
   }
 
-  template <class Patch>
-  SMP::Error_code compute_border_distances(Patch& patch, std::size_t center, std::vector<double>& distances) const
+  template <class Disk>
+  SMP::Error_code compute_border_distances(Disk& disk, std::size_t center, std::vector<double>& distances) const
   {
-    return dispatch([&](const auto& policy) { return policy.compute_border_distances(patch, center, distances); });
+    return dispatch([&](const auto& policy) { return policy.compute_border_distances(disk, center, distances); });
   }
-
-  // the border vertices straightest geodesics could not reach in the last call
-  const Straightest_failure& straightest_failure() const { return m_straightest.last_failure(); }
 
 private:
   template <class F>
   SMP::Error_code dispatch(const F& f) const
   {
     if(m_name == "fast-marching")
-      return f(SMP::Geodesic_border_distance<TriangleMesh, SMP::Fast_marching_geodesics>());
+      return f(SMP::Geodesic_border_distance<SMP::Fast_marching_geodesics>());
     if(m_name == "dijkstra")
-      return f(SMP::Geodesic_border_distance<TriangleMesh, SMP::Dijkstra_geodesics>());
+      return f(SMP::Geodesic_border_distance<SMP::Dijkstra_geodesics>());
     if(m_name == "heat")
-      return f(SMP::Geodesic_border_distance<TriangleMesh, Heat>());
+      return f(SMP::Geodesic_border_distance<Heat>());
     if(m_name == "heat-idt")
-      return f(SMP::Geodesic_border_distance<TriangleMesh, Heat_idt>());
+      return f(SMP::Geodesic_border_distance<Heat_idt>());
     if(m_name == "exact")
-      return f(SMP::Geodesic_border_distance<TriangleMesh, SMP::Exact_geodesics>());
+      return f(SMP::Geodesic_border_distance<SMP::Exact_geodesics>());
     if(m_name == "straightest")
-      return f(m_straightest);
-    return f(SMP::Poisson_border_distance<TriangleMesh>());
+      return f(SMP::Straightest_geodesic_border_distance());
+    return f(SMP::Poisson_border_distance());
   }
 
   std::string m_name;
-  SMP::Straightest_geodesic_border_distance<TriangleMesh> m_straightest;  // its failure record is shared by copies
-};
-
-// The library's report of a parameterizer's call, as the library returned it: the writers
-// read it through `mbp_cli::Run_report` (summary.h, json_output.h).
-template <class Parameterizer>
-class Library_report final : public mbp_cli::Run_report
-{
-public:
-  explicit Library_report(const typename Parameterizer::Report& report) : m_report(report) { }
-
-  std::string kept_border(const std::string& distance) const override
-  {
-    return mbp_cli::kept_border<Parameterizer>(m_report, distance);
-  }
-  std::string repair(bool enabled) const override { return mbp_cli::repair_text(m_report, enabled); }
-  std::string summary(const mbp_cli::Run_facts& facts) const override
-  {
-    return mbp_cli::summary_line<Parameterizer>(m_report, facts);
-  }
-  std::string json(const mbp_cli::Run_facts& facts) const override
-  {
-    return mbp_cli::json_document<Parameterizer>(m_report, facts);
-  }
-
-private:
-  typename Parameterizer::Report m_report;
 };
 
 // What one parameterization of `TriangleMesh` (the mesh, or the seam mesh over it) works
@@ -233,129 +215,119 @@ struct Context
   const mbp_cli::Options& options;
   std::vector<tm_vertex_descriptor> border;  // the longest border loop, from source(bhd)
   Command_line_center_locator<TriangleMesh> locator;
-  Command_line_border_distance<TriangleMesh> distance;
+  Command_line_border_distance distance;
   Uv_map uvmap;
   Flag_map parameterized;
 };
 
-// What a parameterizer's call gave besides the UVs. Vertices are input vertices.
-struct Outcome
+// The call of the parameterizer of one border policy (the policy of --border, so that each
+// border is instantiated with the command line's center locator and border distance once per
+// solver and mesh type). Returns the library's report of the call (its status included).
+template <class TriangleMesh, class BorderPolicy, class SolverTraits>
+SMP::Parameterization_report parameterize_with(Context<TriangleMesh>& c, const BorderPolicy& border,
+                                               const SolverTraits& traits)
 {
-  SMP::Error_code status = SMP::ERROR_WRONG_PARAMETER;
-  std::unique_ptr<mbp_cli::Run_report> report;
-  bool has_center = false;                // --border=conformal and circle locate no center
-  std::size_t center = 0;
-  bool border_kept = false;               // a layout was kept (the report's chosen candidate)
-  std::size_t flipped_before_repair = 0;  // for the message of ERROR_NO_1_TO_1_MAPPING
-  double degenerate_face_threshold = 0.;  // for the message of ERROR_DEGENERATE_FACE
-  std::size_t unreachable = 0;            // border vertices straightest geodesics did not reach
-  std::size_t first_unreachable = 0;      // the first of them
-};
-
-// The call of one parameterizer: a function template over the parameterizer type, so that
-// each border of --border can be a parameterizer type of its own.
-template <class Parameterizer, class TriangleMesh>
-Outcome parameterize_with(Context<TriangleMesh>& c, Parameterizer parameterizer)
-{
-  Outcome o;
+  const SMP::Conformal_parameterizer_3<TriangleMesh, BorderPolicy, SolverTraits> parameterizer(
+    border, traits, c.options.repair ? SMP::BLEND_TOWARD_CIRCLE : SMP::NO_REPAIR);
+  SMP::Parameterization_report report;
   // the vertex index map is not used by the parameterizer (it indexes the component itself)
-  o.status = parameterizer.parameterize(c.tm, c.bhd, c.uvmap, get(CGAL::dynamic_vertex_property_t<int>(), c.tm),
-                                        c.parameterized);
-  const typename Parameterizer::Report& report = parameterizer.last_report();
-  o.report.reset(new Library_report<Parameterizer>(report));
-  o.has_center = parameterizer.center() != boost::graph_traits<TriangleMesh>::null_vertex();
-  if(o.has_center)
-    o.center = input_index(c.tm, parameterizer.center());
-  o.border_kept = report.chosen_candidate >= 0;
-  o.flipped_before_repair = report.flipped_faces_before_repair;
-  o.degenerate_face_threshold = Parameterizer::Patch::degenerate_face_threshold();
-  const auto& straightest = c.distance.straightest_failure();
-  o.unreachable = straightest.unreachable;
-  if(o.unreachable > 0)
-    o.first_unreachable = input_index(c.tm, straightest.vertex);
-  return o;
+  parameterizer.parameterize(c.tm, c.bhd, c.uvmap, get(CGAL::dynamic_vertex_property_t<int>(), c.tm),
+                             c.parameterized, &report);
+  return report;
 }
 
-// The parameterizer of the command line's policies and repair for one border choice.
-template <class Parameterizer, class TriangleMesh>
-Parameterizer make_parameterizer(const Context<TriangleMesh>& c, typename Parameterizer::Border_choice choice)
+// The parameterization with the solver traits `traits`, for the border policy of --border.
+template <class TriangleMesh, class SolverTraits>
+SMP::Parameterization_report parameterize_with_solver(Context<TriangleMesh>& c, const SolverTraits& traits)
 {
-  Parameterizer parameterizer(c.locator, c.distance);
-  if(!c.options.repair)
-    parameterizer.set_repair(Parameterizer::NO_REPAIR);
-  parameterizer.set_border_choice(choice);
-  return parameterizer;
-}
-
-// The parameterization with the solver traits `SolverTraits`, for the border of --border.
-template <class SolverTraits, class TriangleMesh>
-Outcome parameterize_with_solver(Context<TriangleMesh>& c)
-{
-  typedef SMP::Measured_conformal_parameterizer_3<TriangleMesh, Command_line_center_locator<TriangleMesh>,
-                                                  Command_line_border_distance<TriangleMesh>,
-                                                  SolverTraits>                  Parameterizer;
+  typedef SMP::Measured_border<Command_line_center_locator<TriangleMesh>, Command_line_border_distance> Measured;
+  typedef SMP::Automatic_border<Command_line_center_locator<TriangleMesh>, Command_line_border_distance> Automatic;
+  const Measured measured(c.locator, c.distance);
   switch(c.options.border)
   {
   case mbp_cli::Border::conformal:
-    return parameterize_with(c, make_parameterizer<Parameterizer>(c, Parameterizer::CONFORMAL_BORDER));
+    return parameterize_with(c, SMP::Conformal_border(), traits);
   case mbp_cli::Border::circle:
-    return parameterize_with(c, make_parameterizer<Parameterizer>(c, Parameterizer::CIRCULAR_BORDER));
+    return parameterize_with(c, SMP::Circular_border(), traits);
   case mbp_cli::Border::measured:
-    return parameterize_with(c, make_parameterizer<Parameterizer>(c, Parameterizer::MEASURED_BORDER));
+    return parameterize_with(c, measured, traits);
   case mbp_cli::Border::automatic:
     break;
   }
-  return parameterize_with(c, make_parameterizer<Parameterizer>(c, Parameterizer::AUTOMATIC_BORDER));
+  return parameterize_with(c, Automatic(measured), traits);
 }
 
 // The parameterization with the solver of --solver.
 template <class TriangleMesh>
-Outcome parameterize_with_library(Context<TriangleMesh>& c)
+SMP::Parameterization_report parameterize_with_library(Context<TriangleMesh>& c)
 {
 #ifdef MBP_WITH_CHOLMOD
+  typedef SMP::Cholmod_supernodal_cholesky_traits Cholmod;
   if(c.options.solver == mbp_cli::Solver::cholmod)
-    return parameterize_with_solver<SMP::Cholmod_supernodal_cholesky_traits>(c);
+    return parameterize_with_solver(c, Cholmod(Cholmod::AMD));
   if(c.options.solver == mbp_cli::Solver::cholmod_nd)
-    return parameterize_with_solver<SMP::Cholmod_nested_dissection_cholesky_traits>(c);
+    return parameterize_with_solver(c, Cholmod(Cholmod::NESTED_DISSECTION));
 #endif
-  return parameterize_with_solver<CGAL::Default>(c);
+  return parameterize_with_solver(c, SMP::Default_sparse_cholesky_traits());
+}
+
+// The input vertex of the center the library located (0 when it located none, as in the
+// messages of the failures).
+template <class TriangleMesh>
+std::size_t center_input_vertex(const Context<TriangleMesh>& c, const SMP::Parameterization_report& r)
+{
+  return r.has_center ? input_index_at(c.tm, r.center) : 0;
+}
+
+// Why the mesh (or the mesh cut along seams) is not a topological disk.
+std::string explain_not_a_disk(const Mesh& mesh, const Seam_mesh* seam_mesh)
+{
+  const mbp_cli::Mesh_topology input = mbp_cli::mesh_topology(mesh);
+  if(seam_mesh != nullptr)
+    return mbp_cli::explain_cut(input, mbp_cli::mesh_topology(*seam_mesh));
+  if(input.genus > 0)
+    return "the surface has genus " + std::to_string(input.genus) +
+           " (handles); cut every handle with seams: --seams=FILE.selection.txt";
+  return "the longest border touches itself, or a vertex is non-manifold";
+}
+
+// Which border vertices straightest geodesics did not reach (those at distance 0 in the
+// report): the first of them, and how many.
+template <class TriangleMesh>
+std::string explain_unreachable(const Context<TriangleMesh>& c, const SMP::Parameterization_report& r)
+{
+  std::size_t k = 0;
+  while(k + 1 < r.border_distances.size() && r.border_distances[k] > 0.)
+    ++k;
+  return "the straightest geodesic from the center (vertex " + std::to_string(center_input_vertex(c, r)) +
+         ") does not reach border vertex " + std::to_string(input_index(c.tm, c.border[k])) + " (" +
+         std::to_string(r.unreachable_border_vertices) + " of " + std::to_string(c.border.size()) +
+         " border vertices are not reached)";
 }
 
 // Why the parameterization failed, with details the library's code does not give.
-Failure explain_failure(const Outcome& o, const Mesh& mesh, const Seam_mesh* seam_mesh,
-                        const mbp_cli::Options& options, std::size_t border_vertices)
+template <class TriangleMesh>
+Failure explain_failure(const Context<TriangleMesh>& c, const SMP::Parameterization_report& r)
 {
   Failure f;
-  f.code = o.status;
-  if(o.status == SMP::ERROR_DEGENERATE_FACE)
-    f.detail = mbp_cli::find_degenerate_face(mesh, o.degenerate_face_threshold);
-  else if(o.status == SMP::ERROR_NON_FINITE_COORDINATES)
-    f.detail = mbp_cli::find_non_finite_vertex(mesh);
-  else if(o.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)
-  {
-    const mbp_cli::Mesh_topology input = mbp_cli::mesh_topology(mesh);
-    if(seam_mesh != nullptr)
-      f.detail = mbp_cli::explain_cut(input, mbp_cli::mesh_topology(*seam_mesh));
-    else if(input.genus > 0)
-      f.detail = "the surface has genus " + std::to_string(input.genus) +
-                 " (handles); cut every handle with seams: --seams=FILE.selection.txt";
-    else
-      f.detail = "the longest border touches itself, or a vertex is non-manifold";
-  }
-  else if(o.status == SMP::ERROR_NO_1_TO_1_MAPPING)
-    f.detail = std::to_string(o.flipped_before_repair) + " faces are flipped by the measured border" +
-               (options.repair ? std::string(" and no blend toward a circle repairs them")
-                               : std::string(" (repair is off: --no-repair)"));
-  else if(o.status == SMP::ERROR_DEGENERATE_BORDER_MAP)
-    f.detail = "seen from the center (vertex " + std::to_string(o.center) +
+  f.code = r.status;
+  if(r.status == SMP::ERROR_DEGENERATE_FACE)
+    f.detail = mbp_cli::find_degenerate_face(c.mesh, degenerate_face_threshold);
+  else if(r.status == SMP::ERROR_NON_FINITE_COORDINATES)
+    f.detail = mbp_cli::find_non_finite_vertex(c.mesh);
+  else if(r.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)
+    f.detail = explain_not_a_disk(c.mesh, c.seam_mesh);
+  else if(r.status == SMP::ERROR_NO_1_TO_1_MAPPING)
+    f.detail = std::to_string(r.flipped_faces_before_repair) + " faces are flipped by the measured border" +
+               (c.options.repair ? std::string(" and no blend toward a circle repairs them")
+                                 : std::string(" (repair is off: --no-repair)"));
+  else if(r.status == SMP::ERROR_DEGENERATE_BORDER_MAP)
+    f.detail = "seen from the center (vertex " + std::to_string(center_input_vertex(c, r)) +
                "), two consecutive border vertices lie in the same direction, or a border distance is not"
                " positive; try another center (--center=geodesic or --center=vertex:N)";
-  else if(o.status == SMP::ERROR_DISTANCE_COMPUTATION_FAILED && options.distance == "straightest" &&
-          o.unreachable > 0)
-    f.detail = "the straightest geodesic from the center (vertex " + std::to_string(o.center) +
-               ") does not reach border vertex " + std::to_string(o.first_unreachable) + " (" +
-               std::to_string(o.unreachable) + " of " + std::to_string(border_vertices) +
-               " border vertices are not reached)";
+  else if(r.status == SMP::ERROR_DISTANCE_COMPUTATION_FAILED && c.options.distance == "straightest" &&
+          r.unreachable_border_vertices > 0)
+    f.detail = explain_unreachable(c, r);
   return f;
 }
 
@@ -428,7 +400,8 @@ Failure number_uvs(const Context<TriangleMesh>& c, IndexMap uv_index, mbp_cli::U
 
 // The layout of a successful parameterization: UVs, faces, border and center.
 template <class TriangleMesh>
-Failure make_layout(const Context<TriangleMesh>& c, const Outcome& o, mbp_cli::Uv_layout& layout)
+Failure make_layout(const Context<TriangleMesh>& c, const SMP::Parameterization_report& r,
+                    mbp_cli::Uv_layout& layout)
 {
   auto uv_index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), c.tm);
   const Failure f = number_uvs(c, uv_index, layout);
@@ -444,11 +417,11 @@ Failure make_layout(const Context<TriangleMesh>& c, const Outcome& o, mbp_cli::U
   }
   for(auto v : c.border)
     layout.border.push_back(get(uv_index, v));
-  layout.has_center = o.has_center;
-  layout.center_vertex = o.center;
-  if(o.has_center)  // the center is interior: one UV
+  layout.has_center = r.has_center;
+  layout.center_vertex = center_input_vertex(c, r);
+  if(r.has_center)  // the center is interior: one UV
     for(auto v : vertices(c.tm))
-      if(get(c.parameterized, v) && input_index(c.tm, v) == o.center)
+      if(get(c.parameterized, v) && input_index(c.tm, v) == layout.center_vertex)
         layout.center = get(uv_index, v);
   return Failure();
 }
@@ -480,24 +453,6 @@ void measure_distortion(const Context<TriangleMesh>& c, mbp_cli::Run_result& res
   result.quality_seconds = seconds_since(start);
 }
 
-// Whether the polygon `loop` of `uv` is strictly convex and clockwise: every cross product of
-// consecutive edges below -1e-12 |e1| |e2|, the tolerance of the library's convexity test.
-bool is_strictly_convex_clockwise(const std::vector<std::array<double, 2> >& uv, const std::vector<std::size_t>& loop)
-{
-  const std::size_t m = loop.size();
-  if(m < 3)
-    return false;
-  for(std::size_t k = 0; k < m; ++k)
-  {
-    const std::array<double, 2>&a = uv[loop[(k + m - 1) % m]], &b = uv[loop[k]], &c = uv[loop[(k + 1) % m]];
-    const double e1x = b[0] - a[0], e1y = b[1] - a[1], e2x = c[0] - b[0], e2y = c[1] - b[1];
-    const double cross = e1x * e2y - e1y * e2x;
-    if(!(cross < -1e-12 * std::sqrt(e1x * e1x + e1y * e1y) * std::sqrt(e2x * e2x + e2y * e2y)))
-      return false;
-  }
-  return true;
-}
-
 // Parameterizes the mesh or the seam mesh of `c` and fills `result`, or returns why it failed.
 template <class TriangleMesh>
 Failure parameterize_mesh(Context<TriangleMesh>& c, mbp_cli::Run_result& result)
@@ -510,34 +465,33 @@ Failure parameterize_mesh(Context<TriangleMesh>& c, mbp_cli::Run_result& result)
       return f;
     c.locator = Command_line_center_locator<TriangleMesh>(v);
   }
-  Outcome o = parameterize_with_library(c);
+  result.report = parameterize_with_library(c);
   result.border_vertices = c.border.size();
-  if(o.status != SMP::OK)
-    return explain_failure(o, c.mesh, c.seam_mesh, c.options, result.border_vertices);
-  const Failure f = make_layout(c, o, result.layout);
+  if(result.report.status != SMP::OK)
+    return explain_failure(c, result.report);
+  const Failure f = make_layout(c, result.report, result.layout);
   if(f.failed())
     return f;
-  result.report = std::move(o.report);
-  result.border_convex = o.border_kept && is_strictly_convex_clockwise(result.layout.uv, result.layout.border);
   measure_distortion(c, result);
   return Failure();
 }
 
 // Automatic seams (compute_disk_seams()) of a mesh that is not a disk: its seam edges into
 // `seams`, or why there are none.
-Failure automatic_seams_of(Mesh& mesh, std::vector<edge_descriptor>& seams, SMP::Disk_seams_report<Mesh>& report)
+Failure automatic_seams_of(Mesh& mesh, std::vector<edge_descriptor>& seams, SMP::Disk_seams_report& report)
 {
   Seam_edge_map edge_flags = mesh.add_property_map<edge_descriptor, bool>("e:automatic_seam", false).first;
   Seam_vertex_map vertex_flags = mesh.add_property_map<vertex_descriptor, bool>("v:automatic_seam", false).first;
   Failure f;
-  f.code = SMP::compute_disk_seams(mesh, edge_flags, vertex_flags, report);
+  f.code = SMP::compute_disk_seams(mesh, edge_flags, vertex_flags, SMP::Disk_seams_options(), &report);
   if(f.code != SMP::OK)
   {
     f.detail = std::string("automatic seams: ") + SMP::disk_seams_problem_message(report.problem);
-    if(report.problem_vertex != Mesh::null_vertex())
-      f.detail += " (vertex " + std::to_string(std::size_t(report.problem_vertex)) + ")";
-    if(report.problem_face != Mesh::null_face())
-      f.detail += " (face " + std::to_string(std::size_t(report.problem_face)) + ")";
+    // positions in vertices(mesh) and faces(mesh): the input numbering (nothing is removed)
+    if(report.problem_vertex != SMP::Disk_seams_report::no_element)
+      f.detail += " (vertex " + std::to_string(report.problem_vertex) + ")";
+    if(report.problem_face != SMP::Disk_seams_report::no_element)
+      f.detail += " (face " + std::to_string(report.problem_face) + ")";
   }
   else
     for(edge_descriptor e : edges(mesh))
@@ -586,7 +540,7 @@ struct Run::Impl
   std::string where;  // names the failures: the input, and the seams it was cut along
   Run_result result;
   std::vector<edge_descriptor> seams;
-  SMP::Disk_seams_report<Mesh> automatic;
+  SMP::Disk_seams_report automatic;
 
   Run_error fail(const Failure& f) const { return Run_error{where + ": " + f.message(), int(f.code)}; }
 
@@ -663,8 +617,7 @@ void Run::Impl::finish(const Options& options, int scale_exponent)
   result.input_vertices = num_vertices(mesh);
   Seams& s = result.seams;
   s.edges = seams.size();
-  for(vertex_descriptor v : automatic.cones)
-    s.cones.push_back(std::size_t(v));
+  s.cones = automatic.cones;  // positions in vertices(mesh): the input numbering
   s.length = std::ldexp(automatic.seam_length, -scale_exponent);
   s.genus = automatic.genus;
   s.border_loops = automatic.number_of_border_loops;

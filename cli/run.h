@@ -11,12 +11,15 @@
 // mesh is read, checked, cut along seams when it is not a disk, parameterized, and its
 // distortion measured by run.cpp, the only file that calls the library. What the run gives
 // the writers (OBJ, SVG, JSON, summary) is plain data, and the library's report of the
-// parameterization behind `Run_report`.
+// parameterization, `Parameterization_report` (a plain struct: its header holds no CGAL code
+// but the error codes).
 
 #ifndef MBP_CLI_RUN_H
 #define MBP_CLI_RUN_H
 
 #include "options.h"
+
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 
 #include <array>
 #include <cstddef>
@@ -82,27 +85,6 @@ struct Seams
   std::string selection;              // with --write-seams: the text of the selection file
 };
 
-struct Run_facts;
-
-/// The library's report of the parameterization, kept by run.cpp as the library returned it.
-/// The writers read it through these functions only, which summary.h and json_output.h
-/// implement for the report type of each parameterizer the run instantiates.
-class Run_report
-{
-public:
-  virtual ~Run_report() = default;
-  /// the layout kept: "conformal (3 layouts tried)", "measured:poisson t 0.38, mean value
-  /// interior (9 layouts tried)"; `distance` names the measured member
-  virtual std::string kept_border(const std::string& distance) const = 0;
-  /// "repaired 12 flipped faces: blend 0.25, mean value interior", "no repair needed" or
-  /// "repair off"
-  virtual std::string repair(bool enabled) const = 0;
-  /// the one-line summary of the run
-  virtual std::string summary(const Run_facts& facts) const = 0;
-  /// the JSON document of the run
-  virtual std::string json(const Run_facts& facts) const = 0;
-};
-
 /// What the run gives the writers.
 struct Run_result
 {
@@ -113,8 +95,9 @@ struct Run_result
   std::size_t input_vertices = 0;     // vertices of the input, in a face or not
   std::size_t border_vertices = 0;    // of the longest border loop (a seam counts on both sides)
   double border_length = 0.;          // its 3D length
-  bool border_convex = false;         // whether the kept border polygon is strictly convex
-  std::unique_ptr<Run_report> report;
+  /// the library's report of the parameterization (its `border_convex`: whether the kept
+  /// border polygon is strictly convex)
+  CGAL::Surface_mesh_parameterization::Parameterization_report report;
 };
 
 /// What the writers know of a run: the command line, the input, the result, and the times

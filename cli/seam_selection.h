@@ -208,11 +208,12 @@ std::string read_seam_selection(const std::string& path, const TriangleMesh& tm,
 /// the text of the CGAL selection file of the seams `seams` (edges of `tm`), which
 /// `read_seam_selection()` reads back: line 1 the selected vertices (`cones`), line 2 the
 /// selected faces (none), line 3 the seam edges as pairs of 0-based vertex indices in the
-/// order of `vertices(tm)`.
+/// order of `vertices(tm)`. The cones are given by their positions in `vertices(tm)` (as
+/// `Disk_seams_report::cones`).
 template <class TriangleMesh>
 std::string seam_selection_text(const TriangleMesh& tm,
                                 const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams,
-                                const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& cones)
+                                const std::vector<std::size_t>& cones)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
@@ -221,7 +222,7 @@ std::string seam_selection_text(const TriangleMesh& tm,
     put(index, v, i++);
   std::string text;
   for(std::size_t k = 0; k < cones.size(); ++k)
-    text += (k > 0 ? " " : "") + std::to_string(get(index, cones[k]));
+    text += (k > 0 ? " " : "") + std::to_string(cones[k]);
   text += "\n\n";
   for(std::size_t k = 0; k < seams.size(); ++k)
     text += (k > 0 ? " " : "") + std::to_string(get(index, source(seams[k], tm))) + " " +

@@ -11,6 +11,7 @@
 
 #include "svg_writer.h"
 
+#include "summary.h"
 #include "svg_layout.h"
 #include "text_output.h"
 
@@ -67,7 +68,7 @@ std::string svg_picture(const Run_facts& f)
   picture.caption.push_back(caption_of_mesh(f));
   picture.caption.push_back(caption_of_quality(f.result.quality));
   picture.caption.push_back("border " + std::string(border_name(o.border)) + ": kept " +
-                            f.result.report->kept_border(o.distance) + ",  " + f.result.report->repair(o.repair));
+                            kept_border(f.result.report, o.distance) + ",  " + repair_text(f.result.report, o.repair));
   return svg_document(picture);
 }
 

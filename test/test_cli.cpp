@@ -7,7 +7,7 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// The command-line program (examples/measured_parameterization.cpp), run as a user runs it:
+// The command-line program (cli/), run as a user runs it:
 // its OBJ is the mesh with the library's UVs, its SVG and JSON are complete, and every kind
 // of bad input ends with a message naming the problem, a non-zero exit and no output file.
 
