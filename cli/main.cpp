@@ -9,7 +9,8 @@
 
 // The command-line program of the package: flattens a disk-like triangle mesh with the
 // measured boundary parameterization of "Measured boundary parameterization based on
-// Poisson's equation" (Measured_conformal_parameterizer_3) and writes the UV layout.
+// Poisson's equation" (Conformal_parameterizer_3 with the border policy of --border: the
+// paper's Measured_border, or by default Automatic_border) and writes the UV layout.
 //
 //   measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]
 //                             [--center=poisson|geodesic[:METHOD]|vertex:N]
