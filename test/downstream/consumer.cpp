@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #ifdef MBP_WITH_CHOLMOD
 #include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
@@ -50,17 +51,19 @@ int main()
   for(auto h : m.halfedges())
     if(m.is_border(h))
       bhd = h;
-  SMP::Measured_border_parameterizer_3<Mesh> border;
-  SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Measured_border_parameterizer_3<Mesh> > dcp(border);
-  const SMP::Error_code status = SMP::parameterize(m, dcp, bhd, uv);
-  std::cout << SMP::get_measured_error_message(status) << ", center " << border.center() << "\n";
-  if(status != SMP::OK || border.center() != c)
+  SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Measured_border_parameterizer_3<Mesh> > dcp;
+  SMP::Error_code status = SMP::parameterize(m, dcp, bhd, uv);
+  SMP::Parameterization_report report;  // the paper's method in one call, with its report
+  if(status == SMP::OK)
+    status = SMP::parameterize(m, SMP::Measured_conformal_parameterizer_3<Mesh>(), bhd, uv, &report);
+  std::cout << SMP::get_measured_error_message(status) << ", center " << report.center << "\n";
+  if(status != SMP::OK || !report.has_center || Mesh::Vertex_index(Mesh::size_type(report.center)) != c)
     return 1;
 #ifdef MBP_WITH_CHOLMOD
   auto uv_ldlt = m.add_property_map<Mesh::Vertex_index, K::Point_2>("v:ldlt").first;
   auto uv_cholmod = m.add_property_map<Mesh::Vertex_index, K::Point_2>("v:cholmod").first;
   SMP::Measured_conformal_parameterizer_3<Mesh> ldlt;
-  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>, SMP::Poisson_border_distance<Mesh>,
+  SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator, SMP::Poisson_border_distance,
                                           SMP::Cholmod_supernodal_cholesky_traits> cholmod;
   if(SMP::parameterize(m, ldlt, bhd, uv_ldlt) != SMP::OK || SMP::parameterize(m, cholmod, bhd, uv_cholmod) != SMP::OK)
     return 1;
