@@ -26,7 +26,7 @@
 //   --dcp-cap S     scale mode: CGAL's DCP runs once, in a child process killed after S
 //                   seconds (default 600; 0: no DCP)
 //   --cli PATH      scale mode, whole process: the command-line program (default, as
-//                   configured: the build's examples/measured_parameterization); none: skip
+//                   configured: the build's cli/measured_parameterization); none: skip
 //   --bff PATH      scale mode, whole process: Boundary First Flattening's command line
 //                   (default, as configured: ../shared/peers/bff-command-line); none: skip
 //   --whole-runs N  scale mode: whole-process runs of each program (default 3, interleaved)

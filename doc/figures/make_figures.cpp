@@ -13,7 +13,7 @@
 //   make_figures MESH_DIR FIG_DIR WORK_DIR [--zoom=Z]
 //
 // writes into WORK_DIR one SVG per composite figure (3D views rendered by raster.h and
-// embedded as PNG, UV layouts drawn as vectors by examples/cli/svg_layout.h); the script
+// embedded as PNG, UV layouts drawn as vectors by cli/svg_layout.h); the script
 // scripts/make_figures.sh turns each into FIG_DIR/NAME.png with rsvg-convert (at zoom Z, the
 // resolution the 3D views are rendered for). FIG_DIR receives the vector UV layouts (SVG) and
 // figures.md, which lists every figure with what it shows and its distortion figures.
@@ -52,7 +52,7 @@
 
 #include <Eigen/SparseLU>
 
-#include "../../examples/cli/svg_layout.h"
+#include "../../cli/svg_layout.h"
 #include "raster.h"
 
 #include <algorithm>
