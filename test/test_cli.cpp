@@ -11,7 +11,6 @@
 // its OBJ is the mesh with the library's UVs, its SVG and JSON are complete, and every kind
 // of bad input ends with a message naming the problem, a non-zero exit and no output file.
 
-#define BOOST_TEST_MODULE cli
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -49,6 +48,8 @@
 #include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+BOOST_AUTO_TEST_SUITE(cli)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace fs = std::filesystem;
@@ -2041,3 +2042,5 @@ BOOST_AUTO_TEST_CASE(equal_border_loops_are_chosen_by_the_library_rule)
       BOOST_TEST(start == first_start);
     }
 }
+
+BOOST_AUTO_TEST_SUITE_END()
