@@ -78,15 +78,26 @@ echo "mutation_check: sources ($source_mode) in $src, build in $build"
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DMBP_BUILD_DOC=OFF -DMBP_BUILD_BENCHMARK=OFF \
       -DMBP_BUILD_EXAMPLES=OFF > "$log/configure.txt" 2>&1 || { echo "configure failed: $log/configure.txt" >&2; exit 2; }
 
-# build one suite, then run its core tier; prints "pass", "fail", "crash", "timeout" or "build"
-run_suite() {  # suite, log file
-  if ! cmake --build "$build" --target "$1" -j"$jobs" > "$2.build.txt" 2>&1; then
+# the test executable that holds a suite: CTest's entry test_SUITE runs it (test/CMakeLists.txt
+# groups several suites in one executable)
+suite_executable() {  # CTest entry
+  ctest --test-dir "$build" -N -V -R "^$1\$" 2>/dev/null \
+    | sed -n 's/^.*Test command: \([^ ]*\).*$/\1/p' | head -n 1
+}
+
+# build the executable of one suite, then run the suite's core tier; prints "pass", "fail",
+# "crash", "timeout" or "build"
+run_suite() {  # CTest entry test_SUITE, log file
+  local exe
+  exe="$(suite_executable "$1")"
+  if [ -z "$exe" ] || ! cmake --build "$build" --target "$(basename "$exe")" -j"$jobs" > "$2.build.txt" 2>&1; then
     echo build
     return
   fi
-  local exe
-  exe="$(find "$build" -type f -name "$1" -perm -u+x | head -n 1)"
-  (cd "$build" && timeout "$timeout_s" "$exe" "--run_test=!@extended" --log_level=error --report_level=short) > "$2.run.txt" 2>&1
+  # the suite's name in Boost.Test is the entry's name without test_ (test_cli runs the suite
+  # cli of test_command_line)
+  (cd "$build/test" && timeout "$timeout_s" "$exe" "--run_test=${1#test_}" "--run_test=!@extended" \
+     --log_level=error --report_level=short) > "$2.run.txt" 2>&1
   local rc=$?
   # Boost.Test exits with 201 (a failed check) or 200 (an exception); 128 + N is signal N
   if [ $rc -eq 0 ]; then echo pass
