@@ -1,0 +1,98 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_ATLAS_REPORT_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_ATLAS_REPORT_H
+
+/// \file Atlas_report.h
+/// The options of a texture atlas (`compute_atlas()`) and what its computation did.
+
+#include <CGAL/Surface_mesh_parameterization/Soup_repair_report.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+/// The options of `compute_atlas()` and `compute_atlas_of_polygon_soup()`: the texture the
+/// atlas is made for. (An options object rather than named parameters: CGAL 5.5's named
+/// parameters are a closed list.)
+struct Atlas_options
+{
+  /// Texels per side of the square texture the atlas is packed for (default 1024, at least 8).
+  unsigned int resolution = 1024;
+  /// Texels kept free between any two charts and between a chart and the border of the square
+  /// (default 2; at most `resolution / 4`).
+  unsigned int gutter = 2;
+};
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+/// How a chart of an atlas was flattened.
+enum Chart_flattening
+{
+  /// a topological disk, flattened by `Conformal_parameterizer_3` (automatic border)
+  DISK_CHART,
+  /// any other surface, cut open by `compute_disk_seams()` and then flattened the same way
+  SEAMED_CHART,
+  /// the parameterizers gave no one-to-one map: the faces unfolded isometrically, one by one,
+  /// across the edges of a spanning tree of the faces (each face keeps its shape)
+  UNFOLDED_CHART
+};
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+/// One chart of an atlas: a connected set of triangles of the repaired mesh with a one-to-one
+/// map into the unit square.
+struct Atlas_chart_report
+{
+  std::size_t faces = 0;                    ///< triangles of the repaired mesh in the chart
+  Chart_flattening flattening = DISK_CHART;  ///< how it was flattened
+  double area_3d = 0.;                      ///< its area in 3D (the input's unit)
+  double area_uv = 0.;                      ///< its area in the atlas (the unit square's unit)
+  /// the paper's angle distortion (`Parameterization_quality::angle_distortion`) of the
+  /// chart cut open along its seams
+  double angle_distortion = 0.;
+  /// area-weighted mean of |log(UV area / 3D area)| over its faces, after one scale of the
+  /// chart (0: every face keeps its share of the chart's area)
+  double area_spread = 0.;
+};
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
+/// What `compute_atlas()` and `compute_atlas_of_polygon_soup()` did: the repairs of the input,
+/// the charts, the packing, and the time of each step.
+struct Atlas_report
+{
+  /// the repairs that made the input a triangle mesh of oriented, manifold components
+  Soup_repair_report repair;
+  /// the charts, by chart id (the ids written to the face or polygon chart map)
+  std::vector<Atlas_chart_report> charts;
+  /// the area of all charts in the atlas over the area of the unit square
+  double utilization = 0.;
+  /// the scale of 3D lengths into the atlas (UV length per unit of 3D length), the same in
+  /// every chart: UV area is proportional to 3D area across charts
+  double texel_density = 0.;
+  /// the charts' angle distortions, weighted by their 3D areas
+  double angle_distortion = 0.;
+  /// area-weighted mean of |log(UV area / 3D area)| over all faces, after one scale of the
+  /// whole atlas (0: every face keeps its share of the area)
+  double area_spread = 0.;
+  /// \name Wall-clock time of the steps (seconds)
+  /// @{
+  double repair_seconds = 0.;
+  double chart_seconds = 0.;
+  double packing_seconds = 0.;
+  double total_seconds = 0.;
+  /// @}
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_ATLAS_REPORT_H
