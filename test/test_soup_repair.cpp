@@ -1,0 +1,694 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+// The input of the atlas (issue 22, item 1): polygon soups as users have them repaired into a
+// triangle mesh the parameterizers accept, with every input corner mapped to where its UV
+// will come from. Core tier: generated soups, one defect each, with the report's counts as
+// constructed. Extended tier: the 15 meshes of ../shared/data/atlas (MBP_ATLAS_MESH_DIR, else
+// the folder atlas beside MBP_SHARED_MESH_DIR), with the counts of its PROVENANCE.md.
+
+#define BOOST_TEST_MODULE soup_repair
+#include <boost/test/unit_test.hpp>
+
+#include "test_support.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/soup_repair.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
+#include <CGAL/Surface_mesh_parameterization/Soup_repair_report.h>
+
+#include <Eigen/Core>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+typedef CGAL::Simple_cartesian<double>                       K;
+typedef SMP::internal::Repaired_soup<K>                      Repaired;
+typedef Repaired::Mesh                                       Mesh;
+typedef Repaired::Source                                     Source;
+typedef boost::graph_traits<Mesh>::vertex_descriptor         vertex_descriptor;
+typedef boost::graph_traits<Mesh>::halfedge_descriptor       halfedge_descriptor;
+typedef boost::graph_traits<Mesh>::face_descriptor           face_descriptor;
+typedef std::vector<std::vector<std::size_t> >               Polygons;
+using mbp_test::Soup;
+
+namespace {
+
+template <class Point>
+Eigen::Vector3d to_eigen(const Point& p)
+{
+  return Eigen::Vector3d(CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]));
+}
+
+Eigen::Vector3d at(const Mesh& m, vertex_descriptor v) { return to_eigen(m.point(v)); }
+
+// The 3D point a source stands for: the same blend of its halfedges' targets.
+Eigen::Vector3d source_point(const Mesh& m, const Source& s)
+{
+  return (1. - s.t) * at(m, target(s.from, m)) + s.t * at(m, target(s.to, m));
+}
+
+bool is_face_halfedge(const Mesh& m, halfedge_descriptor h)
+{
+  return h != boost::graph_traits<Mesh>::null_halfedge() && std::size_t(h) < m.num_halfedges() &&
+         !m.is_removed(h) && !is_border(h, m);
+}
+
+// The repaired mesh: valid, triangles of nonzero area, manifold vertices, no isolated vertex,
+// no garbage; its per-face vectors and the report's totals agree with it.
+void check_mesh(const Repaired& r)
+{
+  const Mesh& m = r.mesh;
+  BOOST_CHECK(CGAL::is_valid_polygon_mesh(m));
+  BOOST_CHECK(CGAL::is_triangle_mesh(m));
+  BOOST_CHECK(!m.has_garbage());
+  BOOST_CHECK_EQUAL(r.report.faces, m.number_of_faces());
+  BOOST_CHECK_EQUAL(r.report.vertices, m.number_of_vertices());
+  BOOST_REQUIRE_EQUAL(r.face_polygon.size(), m.number_of_faces());
+  BOOST_REQUIRE_EQUAL(r.face_component.size(), m.number_of_faces());
+  std::size_t zero_area = 0, non_manifold = 0, isolated = 0, components = 0;
+  for(face_descriptor f : faces(m))
+  {
+    const halfedge_descriptor h = halfedge(f, m);
+    zero_area += SMP::internal::is_degenerate_triangle(at(m, source(h, m)), at(m, target(h, m)),
+                                                       at(m, target(next(h, m), m))) ? 1 : 0;
+    components = (std::max)(components, r.face_component[std::size_t(f)] + 1);
+  }
+  // is_non_manifold_vertex() walks the whole mesh: on small meshes only; non_manifold_vertices()
+  // gathers them all at once
+  for(vertex_descriptor v : vertices(m))
+  {
+    if(m.number_of_vertices() <= 2000)
+      non_manifold += CGAL::Polygon_mesh_processing::is_non_manifold_vertex(v, m) ? 1 : 0;
+    isolated += (halfedge(v, m) == boost::graph_traits<Mesh>::null_halfedge()) ? 1 : 0;
+  }
+  std::vector<halfedge_descriptor> cones;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(m, std::back_inserter(cones));
+  BOOST_CHECK_EQUAL(zero_area, 0u);
+  BOOST_CHECK_EQUAL(non_manifold, 0u);
+  BOOST_CHECK(cones.empty());
+  BOOST_CHECK_EQUAL(isolated, 0u);
+  BOOST_CHECK_EQUAL(components, r.report.components);
+}
+
+struct Corner_counts
+{
+  std::size_t on_halfedge = 0, on_segment = 0, collapsed = 0, isolated = 0;
+  std::size_t off_point = 0;  // ON_SEGMENT corners farther than the tolerance from their point
+};
+
+// Every input corner: a source whose halfedges are of one face of the mesh, and whose point is
+// the corner's own (ON_HALFEDGE: exactly; ON_SEGMENT: within `tolerance`, else counted).
+template <class Point>
+Corner_counts check_corners(const std::vector<Point>& points, const Polygons& polygons, const Repaired& r,
+                            double tolerance)
+{
+  Corner_counts n;
+  BOOST_REQUIRE_EQUAL(r.corner_offset.size(), polygons.size() + 1);
+  BOOST_REQUIRE_EQUAL(r.corners.size(), r.corner_offset.back());
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+    for(std::size_t j = 0; j < polygons[p].size(); ++j)
+    {
+      const Source& s = r.corner(p, j);
+      if(s.kind == Source::ISOLATED)
+      {
+        ++n.isolated;
+        continue;
+      }
+      BOOST_REQUIRE(is_face_halfedge(r.mesh, s.from) && is_face_halfedge(r.mesh, s.to));
+      BOOST_CHECK(face(s.from, r.mesh) == face(s.to, r.mesh));
+      BOOST_CHECK(s.t >= 0. && s.t <= 1.);
+      const double distance = (source_point(r.mesh, s) - to_eigen(points[polygons[p][j]])).norm();
+      if(s.kind == Source::ON_HALFEDGE)
+      {
+        ++n.on_halfedge;
+        BOOST_CHECK(s.from == s.to && distance == 0.);
+      }
+      else if(s.kind == Source::ON_SEGMENT)
+      {
+        ++n.on_segment;
+        n.off_point += distance > tolerance ? 1 : 0;
+      }
+      else
+        ++n.collapsed;
+    }
+  BOOST_CHECK_EQUAL(n.collapsed, r.report.collapsed_corners);
+  BOOST_CHECK_EQUAL(n.isolated, r.report.isolated_corners);
+  return n;
+}
+
+template <class Point>
+Eigen::Vector3d newell_normal(const std::vector<Point>& points, const std::vector<std::size_t>& polygon)
+{
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for(std::size_t j = 0; j < polygon.size(); ++j)
+    n += to_eigen(points[polygon[j]]).cross(to_eigen(points[polygon[(j + 1) % polygon.size()]]));
+  return n;
+}
+
+// Traceability and orientation: the points of every face are points of its input polygon, and
+// the input polygons whose faces turn the other way are the report's reoriented polygons
+// (faces of one polygon all turn the same way). Polygons without a normal are not counted.
+template <class Point>
+void check_faces_against_input(const std::vector<Point>& points, const Polygons& polygons, const Repaired& r)
+{
+  std::vector<int> turn(polygons.size(), 0);
+  std::size_t foreign = 0, mixed = 0;
+  for(face_descriptor f : faces(r.mesh))
+  {
+    const std::vector<std::size_t>& polygon = polygons[r.face_polygon[std::size_t(f)]];
+    std::vector<Eigen::Vector3d> corners;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, r.mesh), r.mesh))
+      corners.push_back(at(r.mesh, target(h, r.mesh)));
+    for(const Eigen::Vector3d& c : corners)
+      foreign += std::none_of(polygon.begin(), polygon.end(),
+                              [&](std::size_t i) { return to_eigen(points[i]) == c; }) ? 1 : 0;
+    const Eigen::Vector3d n = newell_normal(points, polygon);
+    if(n.norm() == 0.)
+      continue;
+    const int t = (corners[1] - corners[0]).cross(corners[2] - corners[0]).dot(n) > 0. ? 1 : -1;
+    int& known = turn[r.face_polygon[std::size_t(f)]];
+    mixed += (known != 0 && known != t) ? 1 : 0;
+    known = t;
+  }
+  BOOST_CHECK_EQUAL(foreign, 0u);
+  BOOST_CHECK_EQUAL(mixed, 0u);
+  BOOST_CHECK_EQUAL(std::size_t(std::count(turn.begin(), turn.end(), -1)), r.report.reoriented_polygons);
+}
+
+// The counts of two reports, field by field.
+void check_report(const SMP::Soup_repair_report& got, const SMP::Soup_repair_report& want)
+{
+#define MBP_SAME_COUNT(field) BOOST_CHECK_MESSAGE(got.field == want.field, #field ": " << got.field << ", expected " << want.field)
+  MBP_SAME_COUNT(input_points); MBP_SAME_COUNT(input_polygons); MBP_SAME_COUNT(input_corners);
+  MBP_SAME_COUNT(merged_points); MBP_SAME_COUNT(degenerate_polygons); MBP_SAME_COUNT(polygons_with_repeated_points);
+  MBP_SAME_COUNT(duplicate_polygons); MBP_SAME_COUNT(non_manifold_edges); MBP_SAME_COUNT(pinched_vertices);
+  MBP_SAME_COUNT(non_orientable_components); MBP_SAME_COUNT(vertices_split_non_manifold);
+  MBP_SAME_COUNT(vertices_split_non_orientable); MBP_SAME_COUNT(reoriented_polygons);
+  MBP_SAME_COUNT(triangulated_polygons); MBP_SAME_COUNT(triangles_from_polygons);
+  MBP_SAME_COUNT(zero_area_triangles); MBP_SAME_COUNT(vertices_split_after_removal);
+  MBP_SAME_COUNT(vertices); MBP_SAME_COUNT(faces); MBP_SAME_COUNT(components);
+  MBP_SAME_COUNT(collapsed_corners); MBP_SAME_COUNT(isolated_corners);
+#undef MBP_SAME_COUNT
+}
+
+// A report with the input counts of `soup` and the given result, no repair.
+SMP::Soup_repair_report plain_report(const Soup& soup, std::size_t vertices, std::size_t faces,
+                                     std::size_t components = 1)
+{
+  SMP::Soup_repair_report want;
+  want.input_points = soup.points.size();
+  want.input_polygons = soup.faces.size();
+  for(const auto& polygon : soup.faces)
+    want.input_corners += polygon.size();
+  want.vertices = vertices;
+  want.faces = faces;
+  want.components = components;
+  return want;
+}
+
+// Repairs the soup and checks everything but the counts; returns the corner counts.
+Corner_counts repair(const Soup& soup, Repaired& r, double tolerance = 1e-12)
+{
+  BOOST_REQUIRE_EQUAL(SMP::internal::repair_soup_for_atlas(soup.points, soup.faces, r), SMP::OK);
+  check_mesh(r);
+  check_faces_against_input(soup.points, soup.faces, r);
+  return check_corners(soup.points, soup.faces, r, tolerance);
+}
+
+Soup square(double x0 = 0.)
+{
+  Soup s;
+  s.points = {{{x0, 0., 0.}}, {{x0 + 1., 0., 0.}}, {{x0 + 1., 1., 0.}}, {{x0, 1., 0.}}};
+  s.faces = {{0, 1, 2}, {0, 2, 3}};
+  return s;
+}
+
+void append(Soup& soup, const Soup& other)
+{
+  const std::size_t offset = soup.points.size();
+  soup.points.insert(soup.points.end(), other.points.begin(), other.points.end());
+  for(std::vector<std::size_t> polygon : other.faces)
+  {
+    for(std::size_t& i : polygon)
+      i += offset;
+    soup.faces.push_back(polygon);
+  }
+}
+
+// An n x n grid of unit squares in z = 0, two triangles each, turning counterclockwise
+// seen from +z.
+Soup grid(int n)
+{
+  Soup s;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+      s.points.push_back({{double(i), double(j), 0.}});
+  auto id = [n](int i, int j) { return std::size_t(j * (n + 1) + i); };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+std::size_t faces_facing_up(const Mesh& m)
+{
+  std::size_t up = 0;
+  for(face_descriptor f : faces(m))
+  {
+    const halfedge_descriptor h = halfedge(f, m);
+    const Eigen::Vector3d a = at(m, source(h, m)), b = at(m, target(h, m)), c = at(m, target(next(h, m), m));
+    up += (b - a).cross(c - a).z() > 0. ? 1 : 0;
+  }
+  return up;
+}
+
+} // namespace
+
+// ---------------------------------------------------------------- core tier: generated soups
+
+BOOST_AUTO_TEST_CASE(two_components_sharing_nothing)
+{
+  Soup s = square();
+  append(s, square(5.));
+  Repaired r;
+  const Corner_counts n = repair(s, r);
+  check_report(r.report, plain_report(s, 8, 4, 2));
+  BOOST_CHECK_EQUAL(n.on_halfedge, 12u);
+  BOOST_CHECK(r.face_component[0] != r.face_component[2]);
+}
+
+BOOST_AUTO_TEST_CASE(vertex_shared_by_two_cones)
+{
+  // apex 0; a closed fan of 4 triangles up to the ring z = 1, another down to z = -1
+  Soup s;
+  s.points.push_back({{0., 0., 0.}});
+  for(double z : {1., -1.})
+    for(int k = 0; k < 4; ++k)
+      s.points.push_back({{std::cos(k * M_PI / 2), std::sin(k * M_PI / 2), z}});
+  for(std::size_t k = 0; k < 4; ++k)
+  {
+    s.faces.push_back({0, 1 + k, 1 + (k + 1) % 4});
+    s.faces.push_back({0, 5 + (k + 1) % 4, 5 + k});
+  }
+  Repaired r;
+  const Corner_counts n = repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 10, 8, 2);
+  want.pinched_vertices = 1;
+  want.vertices_split_non_manifold = 1;
+  check_report(r.report, want);
+  BOOST_CHECK_EQUAL(n.on_halfedge, 24u);
+}
+
+BOOST_AUTO_TEST_CASE(edge_with_three_faces)
+{
+  Soup s;
+  s.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{.5, 1., 0.}}, {{.5, -1., 0.}}, {{.5, 0., 1.}}};
+  s.faces = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  Repaired r;
+  const Corner_counts n = repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 9, 3, 3);
+  want.non_manifold_edges = 1;
+  want.vertices_split_non_manifold = 4;  // both ends, on 3 sheets each
+  check_report(r.report, want);
+  BOOST_CHECK_EQUAL(n.on_halfedge, 9u);
+}
+
+BOOST_AUTO_TEST_CASE(flipped_faces_take_the_majority_orientation)
+{
+  Soup s = grid(3);
+  for(std::size_t f : {1u, 7u, 12u})
+    std::reverse(s.faces[f].begin(), s.faces[f].end());
+  Repaired r;
+  repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 16, 18);
+  want.reoriented_polygons = 3;
+  check_report(r.report, want);
+  BOOST_CHECK_EQUAL(faces_facing_up(r.mesh), 18u);
+
+  // most faces flipped: the component turns the other way, the few others are reoriented
+  Soup t = grid(3);
+  for(std::size_t f = 0; f < 13; ++f)
+    std::reverse(t.faces[f].begin(), t.faces[f].end());
+  Repaired q;
+  repair(t, q);
+  want.reoriented_polygons = 5;
+  check_report(q.report, want);
+  BOOST_CHECK_EQUAL(faces_facing_up(q.mesh), 0u);
+}
+
+BOOST_AUTO_TEST_CASE(duplicated_faces)
+{
+  Soup s = square();
+  s.faces.push_back({1, 2, 0});  // the first face again, from another corner
+  s.faces.push_back({0, 3, 2});  // the second face, reversed
+  Repaired r;
+  const Corner_counts n = repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 4, 2);
+  want.duplicate_polygons = 2;
+  check_report(r.report, want);
+  BOOST_CHECK_EQUAL(n.on_halfedge, 12u);
+  // a duplicate's corners take the kept face's UVs
+  for(std::size_t j = 0; j < 3; ++j)
+  {
+    BOOST_CHECK(face(r.corner(2, j).from, r.mesh) == face(r.corner(0, 0).from, r.mesh));
+    BOOST_CHECK(face(r.corner(3, j).from, r.mesh) == face(r.corner(1, 0).from, r.mesh));
+  }
+}
+
+BOOST_AUTO_TEST_CASE(zero_area_face_on_the_edge_of_a_face_kept)
+{
+  // A(0) B(1) C(2) M(3) E(4): the sliver A M B (M the middle of AB) lies along the edge AB
+  // of the face A B C, across its longest edge. It is the only link between A B C and the two
+  // faces below A M B: removed, it leaves A and B pinched, split into two components.
+  Soup s;
+  s.points = {{{0., 0., 0.}}, {{2., 0., 0.}}, {{1., 1., 0.}}, {{1., 0., 0.}}, {{1., -1., 0.}}};
+  s.faces = {{0, 1, 2}, {0, 4, 3}, {3, 4, 1}, {0, 3, 1}};
+  Repaired r;
+  const Corner_counts n = repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 7, 3, 2);
+  want.zero_area_triangles = 1;
+  want.vertices_split_after_removal = 2;
+  check_report(r.report, want);
+  BOOST_CHECK_EQUAL(n.on_halfedge, 9u);
+  BOOST_CHECK_EQUAL(n.on_segment, 3u);
+  BOOST_CHECK_EQUAL(n.off_point, 0u);
+  BOOST_REQUIRE_EQUAL(r.zero_area_triangles.size(), 1u);
+  const auto& z = r.zero_area_triangles.front();
+  BOOST_CHECK_EQUAL(z.polygon, 3u);
+  BOOST_CHECK(z.face == face(r.corner(0, 0).from, r.mesh));
+  BOOST_CHECK_CLOSE(r.corner(3, 1).t + r.corner(3, 1).t, 1., 1e-12);  // M halfway
+}
+
+BOOST_AUTO_TEST_CASE(zero_area_face_whose_removal_pinches_vertices)
+{
+  // the sliver P Q R (P, Q, R on a line) is the only link between three triangles, one on
+  // each of its edges: removed, it leaves P, Q and R pinched
+  Soup s;
+  s.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{2., 0., 0.}},
+              {{.5, 0., 1.}}, {{1.5, 0., -1.}}, {{1., 1., 0.}}};
+  s.faces = {{0, 1, 2}, {1, 0, 3}, {2, 1, 4}, {0, 2, 5}};
+  Repaired r;
+  const Corner_counts n = repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 9, 3, 3);
+  want.zero_area_triangles = 1;
+  want.vertices_split_after_removal = 3;
+  check_report(r.report, want);
+  BOOST_CHECK_EQUAL(n.on_segment, 3u);
+  BOOST_CHECK_EQUAL(n.off_point, 0u);
+  // placed across its longest edge P R, on the face P R (1, 1, 0)
+  BOOST_CHECK(r.zero_area_triangles.front().face == face(r.corner(3, 0).from, r.mesh));
+}
+
+BOOST_AUTO_TEST_CASE(quads_and_a_pentagon)
+{
+  Soup s;
+  s.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{2., 0., 0.}}, {{0., 1., 0.}}, {{1., 1., 0.}}, {{2., 1., 0.}},
+              {{1.2, 1.8, 0.}}, {{.5, 2.3, 0.}}, {{-.2, 1.8, 0.}}};
+  s.faces = {{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 6, 7, 8}};
+  Repaired r;
+  const Corner_counts n = repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 9, 7);
+  want.triangulated_polygons = 3;
+  want.triangles_from_polygons = 7;
+  check_report(r.report, want);
+  BOOST_CHECK_EQUAL(n.on_halfedge, 13u);
+  // each polygon's triangles: n - 2 of them, covering its area
+  std::vector<std::size_t> count(3, 0);
+  std::vector<double> area(3, 0.);
+  for(face_descriptor f : faces(r.mesh))
+  {
+    ++count[r.face_polygon[std::size_t(f)]];
+    area[r.face_polygon[std::size_t(f)]] += CGAL::Polygon_mesh_processing::face_area(f, r.mesh);
+  }
+  BOOST_CHECK(count == std::vector<std::size_t>({2, 2, 3}));
+  for(std::size_t p = 0; p < 3; ++p)
+    BOOST_CHECK_CLOSE(area[p], newell_normal(s.points, s.faces[p]).norm() / 2., 1e-9);
+}
+
+BOOST_AUTO_TEST_CASE(polygon_on_a_line)
+{
+  // B A X Y, all on the line y = 0 along the edge A B of a square: CGAL refuses to triangulate
+  // it (zero normal), the fan makes two zero-area triangles, placed on the edge A B
+  Soup s = square();
+  s.points.push_back({{-1., 0., 0.}});
+  s.points.push_back({{2., 0., 0.}});
+  s.faces.push_back({1, 0, 4, 5});
+  Repaired r;
+  const Corner_counts n = repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 4, 2);
+  want.triangulated_polygons = 1;
+  want.triangles_from_polygons = 2;
+  want.zero_area_triangles = 2;
+  check_report(r.report, want);
+  BOOST_CHECK_EQUAL(n.on_segment, 4u);
+  BOOST_CHECK_EQUAL(n.off_point, 2u);  // X and Y, projected on the segment A B
+  for(std::size_t j = 0; j < 4; ++j)
+    BOOST_CHECK(face(r.corner(2, j).from, r.mesh) == face(r.corner(0, 0).from, r.mesh));
+}
+
+BOOST_AUTO_TEST_CASE(moebius_strip)
+{
+  // 8 quads around a circle, the strip's direction turning half a turn: the last quad meets
+  // the first upside down
+  const int n = 8;
+  Soup s;
+  for(int i = 0; i < n; ++i)
+  {
+    const double a = 2 * M_PI * i / n;
+    const Eigen::Vector3d c(std::cos(a), std::sin(a), 0.);
+    const Eigen::Vector3d w = std::cos(a / 2) * c + std::sin(a / 2) * Eigen::Vector3d::UnitZ();
+    for(double side : {-.25, .25})
+      s.points.push_back({{c.x() + side * w.x(), c.y() + side * w.y(), c.z() + side * w.z()}});
+  }
+  for(std::size_t i = 0; i + 1 < std::size_t(n); ++i)
+    s.faces.push_back({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
+  s.faces.push_back({2 * (n - 1), 1, 0, 2 * (n - 1) + 1});
+  Repaired r;
+  const Corner_counts c = repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 18, 16);
+  want.triangulated_polygons = 8;
+  want.triangles_from_polygons = 16;
+  want.non_orientable_components = 1;
+  want.vertices_split_non_orientable = 2;  // the two ends of the cut, both on the border
+  want.reoriented_polygons = r.report.reoriented_polygons;  // checked against the input above
+  check_report(r.report, want);
+  BOOST_CHECK_LE(r.report.reoriented_polygons, 4u);
+  BOOST_CHECK_EQUAL(c.on_halfedge, 32u);
+}
+
+BOOST_AUTO_TEST_CASE(polygons_through_a_point_twice)
+{
+  // a square A B C D (0-3); E F (4, 5) apart; a bow tie G H I G J K (6-10)
+  Soup s = square();
+  s.points.insert(s.points.end(), {{{5., 5., 0.}}, {{6., 5., 0.}}, {{3., 0., 0.}}, {{4., 0., 0.}},
+                                   {{4., 1., 0.}}, {{2., 1., 0.}}, {{2., -1., 0.}}});
+  s.faces.push_back({0, 1, 0});           // 2 points: on the edge A B
+  s.faces.push_back({2, 2, 3, 3});        // 2 points: on the edge C D
+  s.faces.push_back({1, 1, 2, 0});        // A B C once simplified: a duplicate of the first face
+  s.faces.push_back({4, 5, 4});           // 2 points no face has: isolated
+  s.faces.push_back({6, 7, 8, 6, 9, 10}); // two triangles meeting at G
+  Repaired r;
+  const Corner_counts n = repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 10, 4, 3);
+  want.degenerate_polygons = 3;
+  want.polygons_with_repeated_points = 2;
+  want.duplicate_polygons = 1;
+  want.pinched_vertices = 1;
+  want.vertices_split_non_manifold = 1;
+  want.isolated_corners = 3;
+  check_report(r.report, want);
+  BOOST_CHECK_EQUAL(n.on_segment, 7u);  // the corners of the first two degenerate polygons
+  BOOST_CHECK_EQUAL(n.off_point, 0u);
+  BOOST_CHECK(face(r.corner(2, 1).from, r.mesh) == face(r.corner(0, 0).from, r.mesh));
+}
+
+BOOST_AUTO_TEST_CASE(duplicate_points_are_merged)
+{
+  // the two triangles of a square, each with its own points (as in an STL file)
+  Soup s;
+  s.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{1., 1., 0.}}, {{0., 0., 0.}}, {{1., 1., 0.}}, {{0., 1., 0.}}};
+  s.faces = {{0, 1, 2}, {3, 4, 5}};
+  Repaired r;
+  repair(s, r);
+  SMP::Soup_repair_report want = plain_report(s, 4, 2);
+  want.merged_points = 2;
+  check_report(r.report, want);
+}
+
+BOOST_AUTO_TEST_CASE(what_cannot_be_textured_is_an_error)
+{
+  Repaired r;
+  Soup s = square();
+  s.points[1][2] = std::numeric_limits<double>::quiet_NaN();
+  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(s.points, s.faces, r), SMP::ERROR_NON_FINITE_COORDINATES);
+  s.points[1][2] = std::numeric_limits<double>::infinity();
+  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(s.points, s.faces, r), SMP::ERROR_NON_FINITE_COORDINATES);
+  const Soup empty;
+  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(empty.points, empty.faces, r), SMP::ERROR_EMPTY_MESH);
+  Soup degenerate = square();
+  degenerate.faces = {{0, 1, 0}, {2, 2, 2}, {3}};
+  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(degenerate.points, degenerate.faces, r), SMP::ERROR_EMPTY_MESH);
+  BOOST_CHECK_EQUAL(r.report.degenerate_polygons, 3u);
+  Soup flat = square();
+  flat.points[2] = {{2., 0., 0.}};
+  flat.faces = {{0, 1, 2}};
+  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(flat.points, flat.faces, r), SMP::ERROR_EMPTY_MESH);
+  BOOST_CHECK_EQUAL(r.report.zero_area_triangles, 1u);
+  Soup out_of_range = square();
+  out_of_range.faces.push_back({0, 1, 9});
+  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(out_of_range.points, out_of_range.faces, r),
+                    SMP::ERROR_WRONG_PARAMETER);
+}
+
+BOOST_AUTO_TEST_CASE(triangle_mesh_given_directly)
+{
+  const Mesh input = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(3, 8));
+  Repaired r;
+  BOOST_REQUIRE_EQUAL(SMP::internal::repair_face_graph_for_atlas(input, r), SMP::OK);
+  check_mesh(r);
+  check_report(r.report, [&] {
+    SMP::Soup_repair_report want;
+    want.input_points = want.vertices = input.number_of_vertices();
+    want.input_polygons = want.faces = input.number_of_faces();
+    want.input_corners = 3 * input.number_of_faces();
+    want.components = 1;
+    return want;
+  }());
+  // corner i of the soup is the target of the i-th halfedge of face_graph_corners()
+  const auto corners = SMP::internal::face_graph_corners(input);
+  BOOST_REQUIRE_EQUAL(corners.size(), r.corners.size());
+  for(std::size_t i = 0; i < corners.size(); ++i)
+  {
+    BOOST_CHECK(r.corners[i].kind == Source::ON_HALFEDGE);
+    BOOST_CHECK(r.mesh.point(target(r.corners[i].from, r.mesh)) == input.point(target(corners[i], input)));
+  }
+}
+
+// ---------------------------------------------------------------- extended tier: ../shared/data/atlas
+
+namespace {
+
+// The atlas meshes: MBP_ATLAS_MESH_DIR when set, else the folder atlas beside the project's
+// meshes (MBP_SHARED_MESH_DIR: ../shared/data/meshes, so ../shared/data/atlas).
+std::string atlas_mesh_dir()
+{
+  const char* dir = std::getenv("MBP_ATLAS_MESH_DIR");
+  return (dir != nullptr && *dir != '\0') ? std::string(dir) : mbp_test::shared_mesh_dir() + "/../atlas";
+}
+
+boost::test_tools::assertion_result atlas_meshes_present(boost::unit_test::test_unit_id)
+{
+  boost::test_tools::assertion_result present(mbp_test::file_exists(atlas_mesh_dir() + "/PROVENANCE.md"));
+  present.message() << "the atlas meshes are not in " << atlas_mesh_dir() << " (MBP_ATLAS_MESH_DIR)";
+  return present;
+}
+
+// The counts of PROVENANCE.md that the report can be held to, -1 where not comparable:
+// V and F as read (input points and polygons); duplicate points (merged points); polygons by
+// size (triangulated polygons and their triangles); components and pinched vertices where the
+// stored mesh has neither duplicate points nor non-manifold edges (PROVENANCE connects faces
+// through shared vertices); non-orientable components.
+struct Provenance
+{
+  const char* file;
+  long points, polygons, merged, triangulated, triangles, components, pinched, non_orientable;
+};
+
+const Provenance atlas_meshes[] = {
+  {"1002_tray_bottom.STL", 2216, 4520, 0, 0, 0, 1, 0, 0},
+  {"Gravgen.obj", 11803, 17692, 3041, 0, 0, -1, -1, 0},
+  {"Spider_binary.stl", 722, 1368, 0, 0, 0, -1, -1, -1},
+  {"b9_mesh.off", 5951, 10174, 0, 0, 0, 47, 0, 0},
+  {"blobby-shuffled.off", 2027, 4050, 0, 0, 0, 1, 0, 0},
+  {"capsule.obj", 5252, 10200, 250, 0, 0, -1, -1, 0},
+  {"cycloidal.ply", 21384, 43368, 0, 0, 0, -1, -1, -1},
+  {"gazebo.obj", 480, 730, 0, 0, 0, 56, 0, 0},
+  {"lion_vase_poly.off", 46206, 23105, 0, 23104, 92407, 1, 0, 0},
+  {"lionstatue.obj", 31825, 63338, 0, 0, 0, 1, 0, 0},
+  {"moebius.obj", 280, 224, 0, 224, 448, 1, 0, 1},
+  {"pig.stl", 8642, 16848, 0, 0, 0, -1, 421, 0},
+  {"pizza.obj", 24916, 49954, 0, 0, 0, 1, 0, 0},
+  {"plane_holes.obj", 8519, 16747, 0, 0, 0, 1, 0, 0},
+  {"sword-quad-dominant.obj", 22293, 22465, 0, 22117, 44234, 1, 0, 0},
+};
+
+void check_provenance(const Provenance& want, const SMP::Soup_repair_report& got)
+{
+  auto same = [&](const char* what, long expected, std::size_t value) {
+    if(expected >= 0)
+      BOOST_CHECK_MESSAGE(std::size_t(expected) == value,
+                          want.file << ": " << what << " " << value << ", PROVENANCE.md " << expected);
+  };
+  same("points", want.points, got.input_points);
+  same("polygons", want.polygons, got.input_polygons);
+  same("merged points", want.merged, got.merged_points);
+  same("triangulated polygons", want.triangulated, got.triangulated_polygons);
+  same("triangles from polygons", want.triangles, got.triangles_from_polygons);
+  same("components", want.components, got.components);
+  same("pinched vertices", want.pinched, got.pinched_vertices);
+  same("non-orientable components", want.non_orientable, got.non_orientable_components);
+}
+
+void print_report(const std::string& file, const SMP::Soup_repair_report& r, const Corner_counts& n)
+{
+  BOOST_TEST_MESSAGE(file << ": V " << r.input_points << " F " << r.input_polygons << " | merged " << r.merged_points
+    << ", degenerate " << r.degenerate_polygons << ", repeated " << r.polygons_with_repeated_points
+    << ", duplicates " << r.duplicate_polygons << ", NM edges " << r.non_manifold_edges
+    << ", pinched " << r.pinched_vertices << ", non-orientable " << r.non_orientable_components
+    << ", split NM " << r.vertices_split_non_manifold << ", split NO " << r.vertices_split_non_orientable
+    << ", reoriented " << r.reoriented_polygons << ", triangulated " << r.triangulated_polygons
+    << " -> " << r.triangles_from_polygons << ", zero-area " << r.zero_area_triangles
+    << ", split after removal " << r.vertices_split_after_removal << " | V " << r.vertices
+    << " F " << r.faces << " components " << r.components << " | corners: exact " << n.on_halfedge
+    << ", on segment " << n.on_segment << " (" << n.off_point << " projected), collapsed "
+    << n.collapsed << ", isolated " << n.isolated);
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(atlas_meshes_repaired, MBP_EXTENDED_TIER * boost::unit_test::precondition(atlas_meshes_present))
+{
+  for(const Provenance& mesh : atlas_meshes)
+  {
+    BOOST_TEST_CONTEXT(mesh.file)
+    {
+      std::vector<K::Point_3> points;
+      Polygons polygons;
+      BOOST_REQUIRE(CGAL::IO::read_polygon_soup(atlas_mesh_dir() + "/" + mesh.file, points, polygons));
+      Repaired r;
+      const auto start = std::chrono::steady_clock::now();
+      BOOST_REQUIRE_EQUAL(SMP::internal::repair_soup_for_atlas(points, polygons, r), SMP::OK);
+      BOOST_TEST_MESSAGE(mesh.file << ": repaired in "
+                         << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
+      check_mesh(r);
+      check_faces_against_input(points, polygons, r);
+      CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
+      const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                        CGAL::square(box.zmax() - box.zmin()));
+      const Corner_counts n = check_corners(points, polygons, r, 1e-9 * diagonal);
+      print_report(mesh.file, r.report, n);
+      check_provenance(mesh, r.report);
+    }
+  }
+}
