@@ -62,6 +62,9 @@ struct Soup_repair_report
   /// polygons whose orientation was reversed: in each connected component the orientation
   /// of the majority of its polygons is kept
   std::size_t reoriented_polygons = 0;
+  /// polygons that the oriented soup still could not attach to the mesh (none is expected):
+  /// given their own copies of their points
+  std::size_t detached_polygons = 0;
   /// @}
 
   /// \name Repairs of the mesh

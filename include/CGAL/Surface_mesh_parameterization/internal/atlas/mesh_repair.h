@@ -77,15 +77,67 @@ struct Working_mesh
 
 // The mesh of the oriented soup (CGAL). A fresh Surface_mesh numbers its vertices and faces in
 // the order they are added, which polygon_soup_to_polygon_mesh() makes the order of the points
-// (all of them) and of the polygons.
+// (all of them) and of the polygons. False when it does not convert every polygon.
 template <class Point_3>
-void build_mesh(const Working_soup<Point_3>& soup, Working_mesh<Point_3>& w)
+bool convert_soup(const Working_soup<Point_3>& soup, Working_mesh<Point_3>& w)
+{
+#ifndef CGAL_NO_PRECONDITIONS
+  // checked by polygon_soup_to_polygon_mesh() when CGAL's preconditions are on
+  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.polygons))
+    return false;
+#endif
+  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, w.mesh);
+  return w.mesh.number_of_faces() == soup.polygons.size() && w.mesh.number_of_vertices() == soup.points.size();
+}
+
+// A soup that polygon_soup_to_polygon_mesh() does not convert whole (orient_polygon_soup()
+// should leave none: its Euler::add_face() refuses a polygon that runs an edge the way another
+// does, or that closes a vertex already closed), built here one polygon at a time: a polygon
+// refused gets its own copies of its points. Pinched vertices left are split later
+// (duplicate_non_manifold_vertices()). Returns the number of polygons so detached.
+template <class Point_3>
+std::size_t add_polygons_detaching(Working_soup<Point_3>& soup, Working_mesh<Point_3>& w)
+{
+  typedef typename Working_mesh<Point_3>::vertex_descriptor vertex_descriptor;
+  std::vector<vertex_descriptor> vertices, corners;
+  for(const Point_3& p : soup.points)
+    vertices.push_back(w.mesh.add_vertex(p));
+  std::size_t detached = 0;
+  for(Soup_polygon& polygon : soup.polygons)
+  {
+    corners.clear();
+    for(const std::size_t i : polygon)
+      corners.push_back(vertices[i]);
+    if(Euler::add_face(corners, w.mesh) != boost::graph_traits<typename Working_mesh<Point_3>::Mesh>::null_face())
+      continue;
+    ++detached;
+    corners.clear();
+    for(std::size_t& i : polygon)
+    {
+      const Point_3 p = soup.points[i];
+      soup.points.push_back(p);
+      soup.point_origin.push_back(soup.point_origin[i]);
+      i = soup.points.size() - 1;
+      vertices.push_back(w.mesh.add_vertex(p));
+      corners.push_back(vertices.back());
+    }
+    Euler::add_face(corners, w.mesh);
+  }
+  return detached;
+}
+
+// The working mesh of the oriented soup, with the id of every face and the merged point of
+// every vertex.
+template <class Point_3>
+void build_mesh(Working_soup<Point_3>& soup, Working_mesh<Point_3>& w, Soup_repair_report& report)
 {
   typedef typename Working_mesh<Point_3>::face_descriptor face_descriptor;
   typedef typename Working_mesh<Point_3>::vertex_descriptor vertex_descriptor;
-  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, w.mesh);
-  CGAL_assertion(w.mesh.number_of_faces() == soup.polygons.size());
-  CGAL_assertion(w.mesh.number_of_vertices() == soup.points.size());
+  if(!convert_soup(soup, w))
+  {
+    w.mesh.clear_without_removing_property_maps();
+    report.detached_polygons = add_polygons_detaching(soup, w);
+  }
   for(std::size_t i = 0; i < soup.polygons.size(); ++i)
     put(w.face_id, face_descriptor(static_cast<typename face_descriptor::size_type>(i)), soup.polygons[i].id);
   for(std::size_t i = 0; i < soup.points.size(); ++i)

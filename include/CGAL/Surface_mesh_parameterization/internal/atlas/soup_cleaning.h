@@ -124,6 +124,21 @@ void merge_points(Working_soup<Point_3>& soup, Soup_repair_report& report)
   std::iota(soup.point_origin.begin(), soup.point_origin.end(), std::size_t(0));
 }
 
+// Whether a polygon passes through a point twice.
+inline bool has_repeated_point(const std::vector<std::size_t>& polygon)
+{
+  if(polygon.size() <= 16)
+  {
+    for(std::size_t i = 0; i < polygon.size(); ++i)
+      if(std::find(polygon.begin() + i + 1, polygon.end(), polygon[i]) != polygon.end())
+        return true;
+    return false;
+  }
+  std::vector<std::size_t> sorted(polygon);
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+}
+
 // The pieces of a closed polygon of at least 3 distinct points: the polygon without its
 // repeated consecutive points, split where it passes through a point again (the two loops
 // that meet there, each split again). Written here because CGAL 5.5's equivalents,
@@ -134,9 +149,7 @@ inline void split_at_repeated_points(std::vector<std::size_t> polygon, std::vect
   polygon.erase(std::unique(polygon.begin(), polygon.end()), polygon.end());
   while(polygon.size() > 1 && polygon.front() == polygon.back())
     polygon.pop_back();
-  std::vector<std::size_t> sorted(polygon);
-  std::sort(sorted.begin(), sorted.end());
-  if(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end())
+  if(!has_repeated_point(polygon))
   {
     if(polygon.size() >= 3)
       pieces.push_back(polygon);
@@ -160,20 +173,25 @@ template <class Point_3>
 void simplify_polygons(Working_soup<Point_3>& soup, Soup_repair_report& report)
 {
   std::vector<Soup_polygon> simple;
+  simple.reserve(soup.polygons.size());
   std::vector<std::vector<std::size_t> > pieces;
   soup.id_offset.assign(1, 0);
   for(std::size_t p = 0; p < soup.polygons.size(); ++p)
   {
     pieces.clear();
-    split_at_repeated_points(soup.polygons[p], pieces);
+    const std::size_t size = soup.polygons[p].size();
+    if(size >= 3 && !has_repeated_point(soup.polygons[p]))
+      pieces.push_back(std::move(soup.polygons[p]));  // the usual case, not copied
+    else
+      split_at_repeated_points(soup.polygons[p], pieces);
     if(pieces.empty())
       ++report.degenerate_polygons;
-    else if(pieces.size() > 1 || pieces.front().size() != soup.polygons[p].size())
+    else if(pieces.size() > 1 || pieces.front().size() != size)
       ++report.polygons_with_repeated_points;
-    for(const std::vector<std::size_t>& piece : pieces)
+    for(std::vector<std::size_t>& piece : pieces)
     {
       simple.emplace_back();
-      simple.back().assign(piece.begin(), piece.end());
+      simple.back().swap(piece);
       simple.back().id = soup.id_input.size();
       soup.id_input.push_back(p);
     }
@@ -185,34 +203,47 @@ void simplify_polygons(Working_soup<Point_3>& soup, Soup_repair_report& report)
   soup.id_reversed.assign(soup.id_input.size(), false);
 }
 
+// The points of the polygon of `id` in increasing order (`flat`, `offset`: the polygons by id).
+inline std::vector<std::size_t> point_set(const std::vector<std::size_t>& flat, const std::vector<std::size_t>& offset,
+                                          std::size_t id)
+{
+  std::vector<std::size_t> points(flat.begin() + offset[id], flat.begin() + offset[id + 1]);
+  std::sort(points.begin(), points.end());
+  return points;
+}
+
 // Removes the duplicate polygons (CGAL: same points in the same cyclic order, either
 // orientation), and records for each removed one the id of a polygon kept with the same
-// points, which CGAL does not report.
+// points, which CGAL does not report (it erases them): their points are copied before.
 template <class Point_3>
 void merge_polygons(Working_soup<Point_3>& soup, Soup_repair_report& report)
 {
-  std::vector<std::vector<std::size_t> > point_sets(soup.id_input.size());
+  std::vector<std::size_t> flat, offset(1, 0);  // the polygons, in id order (simplify_polygons())
   for(const Soup_polygon& polygon : soup.polygons)
   {
-    point_sets[polygon.id].assign(polygon.begin(), polygon.end());
-    std::sort(point_sets[polygon.id].begin(), point_sets[polygon.id].end());
+    flat.insert(flat.end(), polygon.begin(), polygon.end());
+    offset.push_back(flat.size());
   }
   if(Polygon_mesh_processing::merge_duplicate_polygons_in_polygon_soup(soup.points, soup.polygons) == 0)
     return;
-  std::map<std::vector<std::size_t>, std::size_t> kept;
   std::vector<bool> is_kept(soup.id_input.size(), false);
   for(const Soup_polygon& polygon : soup.polygons)
-  {
-    kept.emplace(point_sets[polygon.id], polygon.id);
     is_kept[polygon.id] = true;
-  }
+  std::map<std::vector<std::size_t>, std::vector<std::size_t> > removed;  // by their points
   std::set<std::size_t> inputs;
   for(std::size_t id = 0; id < is_kept.size(); ++id)
     if(!is_kept[id])
     {
-      soup.id_kept[id] = kept.at(point_sets[id]);
+      removed[point_set(flat, offset, id)].push_back(id);
       inputs.insert(soup.id_input[id]);
     }
+  for(const Soup_polygon& polygon : soup.polygons)
+  {
+    const auto duplicates = removed.find(point_set(flat, offset, polygon.id));
+    if(duplicates != removed.end())
+      for(const std::size_t id : duplicates->second)
+        soup.id_kept[id] = polygon.id;
+  }
   report.duplicate_polygons = inputs.size();
 }
 

@@ -44,6 +44,7 @@
 
 #include <cstddef>
 #include <iterator>
+#include <numeric>
 #include <set>
 #include <utility>
 #include <vector>
@@ -56,8 +57,10 @@ template <class Point_3>
 struct Corner_tables
 {
   typedef typename Working_mesh<Point_3>::halfedge_descriptor halfedge_descriptor;
-  // per id: (merged point, halfedge) of the corners of its faces, of the faces kept first
-  std::vector<std::vector<std::pair<std::size_t, halfedge_descriptor> > > id_corners;
+  // the corners (merged point, halfedge) of the faces of each id, those of the faces kept
+  // first: [id_offset[id], id_offset[id + 1])
+  std::vector<std::size_t> id_offset;
+  std::vector<std::pair<std::size_t, halfedge_descriptor> > corners;
   // per merged point: a halfedge of a face at it, of a face kept when there is one
   std::vector<halfedge_descriptor> point_halfedge;
 };
@@ -65,16 +68,22 @@ struct Corner_tables
 template <class Point_3>
 void fill_corner_tables(const Working_soup<Point_3>& soup, const Working_mesh<Point_3>& w, Corner_tables<Point_3>& t)
 {
-  t.id_corners.assign(soup.id_input.size(), {});
-  t.point_halfedge.assign(soup.points.size(), boost::graph_traits<typename Working_mesh<Point_3>::Mesh>::null_halfedge());
+  const auto null = boost::graph_traits<typename Working_mesh<Point_3>::Mesh>::null_halfedge();
+  t.id_offset.assign(soup.id_input.size() + 1, 0);
+  for(auto f : faces(w.mesh))
+    t.id_offset[get(w.face_id, f) + 1] += degree(f, w.mesh);
+  std::partial_sum(t.id_offset.begin(), t.id_offset.end(), t.id_offset.begin());
+  std::vector<std::size_t> cursor(t.id_offset.begin(), t.id_offset.end() - 1);
+  t.corners.resize(t.id_offset.back());
+  t.point_halfedge.assign(soup.points.size(), null);
   for(int pass = 0; pass < 2; ++pass)
     for(auto f : faces(w.mesh))
       if(w.is_kept(f) == (pass == 0))
         for(auto h : halfedges_around_face(halfedge(f, w.mesh), w.mesh))
         {
           const std::size_t m = get(w.vertex_point, target(h, w.mesh));
-          t.id_corners[get(w.face_id, f)].emplace_back(m, h);
-          if(t.point_halfedge[m] == boost::graph_traits<typename Working_mesh<Point_3>::Mesh>::null_halfedge())
+          t.corners[cursor[get(w.face_id, f)]++] = std::make_pair(m, h);
+          if(t.point_halfedge[m] == null)
             t.point_halfedge[m] = h;
         }
 }
@@ -86,9 +95,9 @@ typename Working_mesh<Point_3>::halfedge_descriptor
 find_corner(const Working_soup<Point_3>& soup, const Corner_tables<Point_3>& t, std::size_t p, std::size_t m)
 {
   for(std::size_t id = soup.id_offset[p]; id < soup.id_offset[p + 1]; ++id)
-    for(const auto& corner : t.id_corners[soup.id_kept[id]])
-      if(corner.first == m)
-        return corner.second;
+    for(std::size_t k = t.id_offset[soup.id_kept[id]]; k < t.id_offset[soup.id_kept[id] + 1]; ++k)
+      if(t.corners[k].first == m)
+        return t.corners[k].second;
   return boost::graph_traits<typename Working_mesh<Point_3>::Mesh>::null_halfedge();
 }
 
@@ -320,9 +329,8 @@ Error_code repair_soup_for_atlas(const PointRange& points, const PolygonRange& p
     return ERROR_EMPTY_MESH;
   merge_polygons(soup, out.report);
   orient_soup(soup, out.report);
-  CGAL_assertion(Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.polygons));
   Working_mesh<Point_3> w;
-  build_mesh(soup, w);
+  build_mesh(soup, w, out.report);
   keep_majority_orientation(soup, w);
   triangulate(soup, w, out.report);
   out.report.zero_area_triangles = mark_zero_area(w);
