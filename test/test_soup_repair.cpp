@@ -13,7 +13,6 @@
 // constructed. Extended tier: the 15 meshes of ../shared/data/atlas (MBP_ATLAS_MESH_DIR, else
 // the folder atlas beside MBP_SHARED_MESH_DIR), with the counts of its PROVENANCE.md.
 
-#define BOOST_TEST_MODULE soup_repair
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -37,6 +36,8 @@
 #include <map>
 #include <string>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(soup_repair)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                       K;
@@ -722,3 +723,5 @@ BOOST_AUTO_TEST_CASE(atlas_meshes_repaired, MBP_EXTENDED_TIER * boost::unit_test
     }
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()
