@@ -34,7 +34,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <set>
 #include <vector>
 
 namespace CGAL {
@@ -68,6 +67,13 @@ struct Working_mesh
   }
 
   bool is_kept(face_descriptor f) const { return get(state, f) == KEPT; }
+  void remove_property_maps()
+  {
+    mesh.remove_property_map(face_id);
+    mesh.remove_property_map(vertex_point);
+    mesh.remove_property_map(state);
+    mesh.remove_property_map(placement);
+  }
   Eigen::Vector3d position(vertex_descriptor v) const
   {
     const Point_3& p = mesh.point(v);
@@ -82,7 +88,8 @@ template <class Point_3>
 bool convert_soup(const Working_soup<Point_3>& soup, Working_mesh<Point_3>& w)
 {
 #ifndef CGAL_NO_PRECONDITIONS
-  // checked by polygon_soup_to_polygon_mesh() when CGAL's preconditions are on
+  // a precondition of polygon_soup_to_polygon_mesh() when CGAL's preconditions are on (not
+  // with NDEBUG): without them, a polygon it cannot add is left out, which the counts show
   if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(soup.polygons))
     return false;
 #endif
@@ -227,17 +234,16 @@ void triangulate(const Working_soup<Point_3>& soup, Working_mesh<Point_3>& w, So
   const auto polygons = non_triangles(w.mesh);
   if(polygons.empty())
     return;
-  std::vector<bool> is_polygon(soup.id_input.size(), false);
-  std::set<std::size_t> inputs;
+  std::vector<bool> is_polygon(soup.id_input.size(), false), is_input(soup.id_offset.size(), false);
   for(auto f : polygons)
   {
     is_polygon[get(w.face_id, f)] = true;
-    inputs.insert(soup.id_input[get(w.face_id, f)]);
+    is_input[soup.id_input[get(w.face_id, f)]] = true;
   }
   Polygon_id_visitor<Mesh> visitor{w.face_id};
   if(!Polygon_mesh_processing::triangulate_faces(polygons, w.mesh, parameters::visitor(visitor)))
     triangulate_rest(w.mesh, visitor);
-  report.triangulated_polygons = inputs.size();
+  report.triangulated_polygons = std::size_t(std::count(is_input.begin(), is_input.end(), true));
   for(auto f : faces(w.mesh))
     report.triangles_from_polygons += is_polygon[get(w.face_id, f)] ? 1 : 0;
 }

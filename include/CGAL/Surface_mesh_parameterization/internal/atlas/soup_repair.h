@@ -14,20 +14,22 @@
 // points, polygons of any size) repaired into a triangle mesh whose connected components the
 // parameterizers accept, with nothing lost: every corner of every input polygon knows where
 // its UV comes from (repaired_soup.h). The steps, each a CGAL function where one does the job:
-//  1. soup (soup_cleaning.h): duplicate points merged, polygons passing through a point twice
-//     simplified or split, degenerate polygons (fewer than 3 distinct points) dropped,
-//     duplicate polygons merged, orientation made consistent with non-manifold edges, pinched
-//     vertices and non-orientable pieces cut;
+//  1. soup (soup_cleaning.h, soup_orientation.h): duplicate points merged, polygons passing
+//     through a point twice simplified or split, degenerate polygons (fewer than 3 distinct
+//     points) dropped, duplicate polygons merged, orientation made consistent with
+//     non-manifold edges, pinched vertices and non-orientable pieces cut;
 //  2. mesh (mesh_repair.h): built, each component turned to the orientation of the majority
 //     of its input polygons, triangulated, its zero-area triangles placed on edges of faces
 //     kept;
 //  3. here: every input corner given its source, the zero-area triangles removed, the vertices
-//     this pinches split, the mesh compacted, its components counted.
+//     this pinches split, the mesh compacted, its components counted, the corners whose point
+//     no face has attached to the nearest vertex.
 // A triangle mesh given directly enters as a soup (face_graph_to_soup()).
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/mesh_repair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/repaired_soup.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/soup_cleaning.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/soup_orientation.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Soup_repair_report.h>
 
@@ -39,9 +41,13 @@
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
 
 #include <boost/iterator/function_output_iterator.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <iterator>
 #include <numeric>
@@ -227,12 +233,8 @@ void remove_zero_area(Working_mesh<Point_3>& w, Soup_repair_report& report)
   Polygon_mesh_processing::remove_isolated_vertices(w.mesh);
 }
 
-// Copies the working mesh, without its removed elements, into the result (copy_face_graph(),
-// which reports the copy of every halfedge and face), and moves the sources and the
-// faces' input polygons over to it. face_id: the id of each face of the result.
 template <class Kernel, class Point_3>
-void compact(const Working_soup<Point_3>& soup, Working_mesh<Point_3>& w, Repaired_soup<Kernel>& out,
-             std::vector<std::size_t>& face_id)
+void copy_compacted(Working_mesh<Point_3>& w, Repaired_soup<Kernel>& out, std::vector<std::size_t>& face_id)
 {
   typedef typename Working_mesh<Point_3>::halfedge_descriptor halfedge_descriptor;
   typedef typename Working_mesh<Point_3>::face_descriptor face_descriptor;
@@ -246,12 +248,8 @@ void compact(const Working_soup<Point_3>& soup, Working_mesh<Point_3>& w, Repair
                           }))
                           .face_to_face_output_iterator(std::back_inserter(f2f)));
   face_id.assign(out.mesh.number_of_faces(), 0);
-  out.face_polygon.assign(out.mesh.number_of_faces(), 0);
   for(const auto& f : f2f)
-  {
     face_id[std::size_t(f.second)] = get(w.face_id, f.first);
-    out.face_polygon[std::size_t(f.second)] = soup.id_input[get(w.face_id, f.first)];
-  }
   auto move_over = [&copy](Source& s) {
     if(s.kind != Source::ISOLATED)
       s = Source{get(copy, s.from), get(copy, s.to), s.t, s.kind};
@@ -259,12 +257,30 @@ void compact(const Working_soup<Point_3>& soup, Working_mesh<Point_3>& w, Repair
   for(Source& s : out.corners)
     move_over(s);
   for(auto& z : out.zero_area_triangles)
-  {
     for(Source& s : z.corners)
       move_over(s);
-    if(z.corners[0].kind != Source::ISOLATED)
-      z.face = face(z.corners[0].from, out.mesh);
+}
+
+// The working mesh without its removed elements, into the result: moved when nothing was
+// removed, else copied (copy_face_graph(), which reports the copy of every halfedge and face)
+// and the sources moved over to the copy. face_id: the id of each face of the result.
+template <class Kernel, class Point_3>
+void compact(const Working_soup<Point_3>& soup, Working_mesh<Point_3>& w, Repaired_soup<Kernel>& out,
+             std::vector<std::size_t>& face_id)
+{
+  if(w.mesh.has_garbage())
+    copy_compacted(w, out, face_id);
+  else
+  {
+    face_id.resize(w.mesh.number_of_faces());
+    for(auto f : faces(w.mesh))
+      face_id[std::size_t(f)] = get(w.face_id, f);
+    w.remove_property_maps();
+    out.mesh = std::move(w.mesh);
   }
+  out.face_polygon.resize(face_id.size());
+  for(std::size_t f = 0; f < face_id.size(); ++f)
+    out.face_polygon[f] = soup.id_input[face_id[f]];
 }
 
 // The connected components of the result, and how many of them hold a cut of a
@@ -284,22 +300,22 @@ void count_components(const Working_soup<Point_3>& soup, const std::vector<std::
   std::vector<bool> is_cut(soup.id_input.size(), false);
   for(const std::size_t id : soup.cut_ids)
     is_cut[id] = true;
-  std::set<std::size_t> cut_components;
+  std::vector<bool> cut_component(out.report.components, false);
   for(std::size_t f = 0; f < face_id.size(); ++f)
     if(is_cut[face_id[f]])
-      cut_components.insert(out.face_component[f]);
-  out.report.non_orientable_components = cut_components.size();
+      cut_component[out.face_component[f]] = true;
+  out.report.non_orientable_components = std::size_t(std::count(cut_component.begin(), cut_component.end(), true));
 }
 
 template <class Kernel, class Point_3>
 void count_result(const Working_soup<Point_3>& soup, Repaired_soup<Kernel>& out)
 {
   typedef typename Repaired_soup<Kernel>::Source Source;
-  std::set<std::size_t> reversed;
+  std::vector<bool> reversed(soup.id_offset.size(), false);  // per input polygon
   for(const Soup_polygon& polygon : soup.polygons)
     if(soup.id_reversed[polygon.id])
-      reversed.insert(soup.id_input[polygon.id]);
-  out.report.reoriented_polygons = reversed.size();
+      reversed[soup.id_input[polygon.id]] = true;
+  out.report.reoriented_polygons = std::size_t(std::count(reversed.begin(), reversed.end(), true));
   out.report.vertices = out.mesh.number_of_vertices();
   out.report.faces = out.mesh.number_of_faces();
   for(const Source& s : out.corners)
@@ -309,16 +325,75 @@ void count_result(const Working_soup<Point_3>& soup, Repaired_soup<Kernel>& out)
   }
 }
 
-// Repairs the soup `points`, `polygons` (the user's data as read by CGAL's readers: points with
-// three coordinates p[0], p[1], p[2]; polygons as ranges of point indices, of any size) into
-// `out` (repaired_soup.h). Returns OK, or ERROR_NON_FINITE_COORDINATES (a point is infinite or
-// NaN), ERROR_WRONG_PARAMETER (an index out of range), ERROR_EMPTY_MESH (no face is left: no
-// polygon with 3 distinct points, or all of zero area); `out.report` is filled up to the error.
+// A halfedge of a face at the vertex of `mesh` nearest to `p` (CGAL's k-d tree), for the
+// corners whose point no face has.
+template <class Mesh>
+class Nearest_face_corner
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::property_map<Mesh, vertex_point_t>::const_type Point_map;
+  typedef typename Kernel_traits<typename Mesh::Point>::Kernel Kernel;
+  typedef Search_traits_adapter<vertex_descriptor, Point_map, Search_traits_3<Kernel> > Traits;
+  typedef Orthogonal_k_neighbor_search<Traits> Search;
+
+  const Mesh& m_mesh;
+  typename Search::Tree m_tree;
+
+public:
+  explicit Nearest_face_corner(const Mesh& mesh)
+    : m_mesh(mesh), m_tree(vertices(mesh).begin(), vertices(mesh).end(), typename Search::Tree::Splitter(),
+                           Traits(get(vertex_point, mesh)))
+  {}
+  typename boost::graph_traits<Mesh>::halfedge_descriptor operator()(const typename Mesh::Point& p) const
+  {
+    const Search search(m_tree, p, 1, 0, true, typename Search::Distance(get(vertex_point, m_mesh)));
+    for(auto h : halfedges_around_target(search.begin()->first, m_mesh))
+      if(!is_border(h, m_mesh))
+        return h;
+    return boost::graph_traits<Mesh>::null_halfedge();  // (no isolated vertex in the result)
+  }
+};
+
+// The ISOLATED corners (of input polygons and of zero-area triangles) given a halfedge: all
+// those of one polygon at the nearest corner of a face to the point of the first of them, so
+// that every corner gets its UV in a chart. Then the face of each zero-area triangle.
+template <class Kernel, class Point_3>
+void attach_isolated_corners(const Working_soup<Point_3>& soup, Repaired_soup<Kernel>& out)
+{
+  typedef typename Repaired_soup<Kernel>::Source Source;
+  auto is_isolated = [](const Source& s) { return s.kind == Source::ISOLATED; };
+  const bool any = std::any_of(out.corners.begin(), out.corners.end(), is_isolated) ||
+                   std::any_of(out.zero_area_triangles.begin(), out.zero_area_triangles.end(), [&](const auto& z) {
+                     return std::any_of(z.corners.begin(), z.corners.end(), is_isolated);
+                   });
+  if(any)
+  {
+    const Nearest_face_corner<typename Repaired_soup<Kernel>::Mesh> nearest(out.mesh);
+    for(std::size_t p = 0; p + 1 < out.corner_offset.size(); ++p)
+    {
+      const std::size_t begin = out.corner_offset[p], end = out.corner_offset[p + 1];
+      const auto first = std::find_if(out.corners.begin() + begin, out.corners.begin() + end, is_isolated);
+      if(first == out.corners.begin() + end)
+        continue;
+      const auto h = nearest(soup.points[soup.corner_point[std::size_t(first - out.corners.begin())]]);
+      std::replace_if(first, out.corners.begin() + end, is_isolated, Source{h, h, 0., Source::ISOLATED});
+    }
+    for(auto& z : out.zero_area_triangles)
+      if(std::any_of(z.corners.begin(), z.corners.end(), is_isolated))
+      {
+        const auto h = nearest(z.points[0]);
+        std::replace_if(z.corners.begin(), z.corners.end(), is_isolated, Source{h, h, 0., Source::ISOLATED});
+      }
+  }
+  for(auto& z : out.zero_area_triangles)
+    z.face = face(z.corners[0].from, out.mesh);
+}
+
+// The steps of repair_soup_for_atlas(), into `out`, which is left partial on an error.
 template <class Kernel, class PointRange, class PolygonRange>
-Error_code repair_soup_for_atlas(const PointRange& points, const PolygonRange& polygons, Repaired_soup<Kernel>& out)
+Error_code repair_steps(const PointRange& points, const PolygonRange& polygons, Repaired_soup<Kernel>& out)
 {
   typedef typename Kernel::Point_3 Point_3;
-  out = Repaired_soup<Kernel>();
   Working_soup<Point_3> soup;
   const Error_code loaded = load_soup(points, polygons, soup, out.report);
   if(loaded != OK)
@@ -340,10 +415,32 @@ Error_code repair_soup_for_atlas(const PointRange& points, const PolygonRange& p
   remove_zero_area(w, out.report);
   std::vector<std::size_t> face_id;
   compact(soup, w, out, face_id);
+  if(out.mesh.number_of_faces() == 0)
+    return ERROR_EMPTY_MESH;
   out.corner_offset = soup.corner_offset;
   count_components(soup, face_id, out);
   count_result(soup, out);
-  return out.mesh.number_of_faces() == 0 ? ERROR_EMPTY_MESH : OK;
+  attach_isolated_corners(soup, out);
+  return OK;
+}
+
+// Repairs the soup `points`, `polygons` (the user's data as read by CGAL's readers: points with
+// three coordinates p[0], p[1], p[2]; polygons as ranges of point indices, of any size) into
+// `out` (repaired_soup.h). Returns OK, or ERROR_NON_FINITE_COORDINATES (a point is infinite or
+// NaN), ERROR_WRONG_PARAMETER (an index out of range), ERROR_EMPTY_MESH (no face is left: no
+// polygon with 3 distinct points, or all of zero area). On an error nothing is output: `out`
+// is empty but for its report, filled up to the error (the input counts, the repairs found).
+template <class Kernel, class PointRange, class PolygonRange>
+Error_code repair_soup_for_atlas(const PointRange& points, const PolygonRange& polygons, Repaired_soup<Kernel>& out)
+{
+  Repaired_soup<Kernel> result;
+  const Error_code error = repair_steps(points, polygons, result);
+  out = Repaired_soup<Kernel>();
+  if(error == OK)
+    out = std::move(result);
+  else
+    out.report = result.report;
+  return error;
 }
 
 // A face graph as a soup, so that a triangle mesh given directly takes the same way
