@@ -10,8 +10,8 @@
 // The input of the atlas (issue 22, item 1): polygon soups as users have them repaired into a
 // triangle mesh the parameterizers accept, with every input corner mapped to where its UV
 // will come from. Core tier: generated soups, one defect each, with the report's counts as
-// constructed. Extended tier: the 15 meshes of ../shared/data/atlas (MBP_ATLAS_MESH_DIR, else
-// the folder atlas beside MBP_SHARED_MESH_DIR), with the counts of its PROVENANCE.md.
+// constructed. Extended tier: the 15 meshes of ../shared/data/atlas (the folder atlas beside
+// MBP_SHARED_MESH_DIR), with the counts of its PROVENANCE.md.
 
 #include <boost/test/unit_test.hpp>
 
@@ -29,12 +29,18 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <map>
+#include <random>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 BOOST_AUTO_TEST_SUITE(soup_repair)
@@ -72,8 +78,50 @@ bool is_face_halfedge(const Mesh& m, halfedge_descriptor h)
          !m.is_removed(h) && !is_border(h, m);
 }
 
-// The repaired mesh: valid, triangles of nonzero area, manifold vertices, no isolated vertex,
-// no garbage; its per-face vectors and the report's totals agree with it.
+std::array<std::size_t, 3> face_vertices(const Mesh& m, face_descriptor f)
+{
+  const halfedge_descriptor h = halfedge(f, m);
+  return {{std::size_t(source(h, m)), std::size_t(target(h, m)), std::size_t(target(next(h, m), m))}};
+}
+
+// Written without CGAL's halfedge structure, from vertex triples: the directed edges that
+// belong to more than one triangle (none when every edge has at most two triangles running it
+// opposite ways: consistently oriented), and the vertices whose triangles are not one fan
+// (connected through edges at the vertex): pinched.
+std::pair<std::size_t, std::size_t> manifold_defects(const std::vector<std::array<std::size_t, 3> >& triangles)
+{
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> triangle_of;  // per directed edge
+  std::map<std::size_t, std::vector<std::size_t> > around;
+  std::size_t repeated = 0, pinched = 0;
+  for(std::size_t f = 0; f < triangles.size(); ++f)
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      repeated += triangle_of.emplace(std::make_pair(triangles[f][k], triangles[f][(k + 1) % 3]), f).second ? 0 : 1;
+      around[triangles[f][k]].push_back(f);
+    }
+  for(const auto& v : around)
+  {
+    std::set<std::size_t> fan = {v.second.front()};
+    for(std::vector<std::size_t> front = {v.second.front()}; !front.empty();)
+    {
+      const std::array<std::size_t, 3>& t = triangles[front.back()];
+      front.pop_back();
+      const std::size_t k = std::size_t(std::find(t.begin(), t.end(), v.first) - t.begin());
+      for(const auto& e : {std::make_pair(t[(k + 1) % 3], v.first), std::make_pair(v.first, t[(k + 2) % 3])})
+      {
+        const auto across = triangle_of.find(e);  // the triangle on the other side of an edge at v
+        if(across != triangle_of.end() && fan.insert(across->second).second)
+          front.push_back(across->second);
+      }
+    }
+    pinched += fan.size() == v.second.size() ? 0 : 1;
+  }
+  return std::make_pair(repeated, pinched);
+}
+
+// The repaired mesh: valid, triangles of nonzero area, oriented and manifold (CGAL's checks and
+// manifold_defects()), no isolated vertex, no garbage; its per-face vectors and the
+// report's totals agree with it.
 void check_mesh(const Repaired& r)
 {
   const Mesh& m = r.mesh;
@@ -84,7 +132,7 @@ void check_mesh(const Repaired& r)
   BOOST_CHECK_EQUAL(r.report.vertices, m.number_of_vertices());
   BOOST_REQUIRE_EQUAL(r.face_polygon.size(), m.number_of_faces());
   BOOST_REQUIRE_EQUAL(r.face_component.size(), m.number_of_faces());
-  std::size_t zero_area = 0, non_manifold = 0, isolated = 0, components = 0;
+  std::size_t zero_area = 0, isolated = 0, components = 0;
   for(face_descriptor f : faces(m))
   {
     const halfedge_descriptor h = halfedge(f, m);
@@ -92,21 +140,18 @@ void check_mesh(const Repaired& r)
                                                        at(m, target(next(h, m), m))) ? 1 : 0;
     components = (std::max)(components, r.face_component[std::size_t(f)] + 1);
   }
-  // is_non_manifold_vertex() walks the whole mesh: on small meshes only; non_manifold_vertices()
-  // gathers them all at once
   for(vertex_descriptor v : vertices(m))
-  {
-    if(m.number_of_vertices() <= 2000)
-      non_manifold += CGAL::Polygon_mesh_processing::is_non_manifold_vertex(v, m) ? 1 : 0;
     isolated += (halfedge(v, m) == boost::graph_traits<Mesh>::null_halfedge()) ? 1 : 0;
-  }
   std::vector<halfedge_descriptor> cones;
   CGAL::Polygon_mesh_processing::non_manifold_vertices(m, std::back_inserter(cones));
   BOOST_CHECK_EQUAL(zero_area, 0u);
-  BOOST_CHECK_EQUAL(non_manifold, 0u);
   BOOST_CHECK(cones.empty());
   BOOST_CHECK_EQUAL(isolated, 0u);
   BOOST_CHECK_EQUAL(components, r.report.components);
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(face_descriptor f : faces(m))
+    triangles.push_back(face_vertices(m, f));
+  BOOST_CHECK(manifold_defects(triangles) == std::make_pair(std::size_t(0), std::size_t(0)));
 }
 
 struct Corner_counts
@@ -115,8 +160,9 @@ struct Corner_counts
   std::size_t off_point = 0;  // ON_SEGMENT corners farther than the tolerance from their point
 };
 
-// Every input corner: a source whose halfedges are of one face of the mesh, and whose point is
-// the corner's own (ON_HALFEDGE: exactly; ON_SEGMENT: within `tolerance`, else counted).
+// Every input corner has a source: two halfedges of one face of the mesh, whatever its kind;
+// ON_HALFEDGE exactly at the corner's point, ON_SEGMENT within `tolerance` of it (else
+// counted), COLLAPSED and ISOLATED at one vertex.
 template <class Point>
 Corner_counts check_corners(const std::vector<Point>& points, const Polygons& polygons, const Repaired& r,
                             double tolerance)
@@ -128,40 +174,149 @@ Corner_counts check_corners(const std::vector<Point>& points, const Polygons& po
     for(std::size_t j = 0; j < polygons[p].size(); ++j)
     {
       const Source& s = r.corner(p, j);
-      if(s.kind == Source::ISOLATED)
-      {
-        ++n.isolated;
-        continue;
-      }
       BOOST_REQUIRE(is_face_halfedge(r.mesh, s.from) && is_face_halfedge(r.mesh, s.to));
       BOOST_CHECK(face(s.from, r.mesh) == face(s.to, r.mesh));
       BOOST_CHECK(s.t >= 0. && s.t <= 1.);
       const double distance = (source_point(r.mesh, s) - to_eigen(points[polygons[p][j]])).norm();
       if(s.kind == Source::ON_HALFEDGE)
-      {
-        ++n.on_halfedge;
         BOOST_CHECK(s.from == s.to && distance == 0.);
-      }
       else if(s.kind == Source::ON_SEGMENT)
-      {
-        ++n.on_segment;
         n.off_point += distance > tolerance ? 1 : 0;
-      }
       else
-        ++n.collapsed;
+        BOOST_CHECK(s.from == s.to && s.t == 0.);
+      ++(s.kind == Source::ON_HALFEDGE ? n.on_halfedge : s.kind == Source::ON_SEGMENT ? n.on_segment
+         : s.kind == Source::COLLAPSED ? n.collapsed : n.isolated);
     }
   BOOST_CHECK_EQUAL(n.collapsed, r.report.collapsed_corners);
   BOOST_CHECK_EQUAL(n.isolated, r.report.isolated_corners);
   return n;
 }
 
+// The UVs of the input corners through repaired_triangles() and input_corner_uv(), with a
+// random UV on every corner of every face (as charts give a UV per face corner): finite, and
+// of zero area for every polygon of zero area (`zero_area`) with no face of its own. Returns
+// the number of polygons without a face of their own (zero-area, degenerate, duplicates).
+std::size_t check_corner_uvs(const Polygons& polygons, const std::vector<bool>& zero_area, const Repaired& r)
+{
+  const SMP::internal::Atlas_triangles t = SMP::internal::repaired_triangles(r);
+  BOOST_REQUIRE_EQUAL(t.faces.size(), r.mesh.number_of_faces());
+  std::mt19937 random(22);
+  std::uniform_real_distribution<double> uniform(0., 1.);
+  std::vector<std::array<Eigen::Vector2d, 3> > uv(t.faces.size());
+  std::vector<bool> has_face(polygons.size(), false);
+  for(face_descriptor f : faces(r.mesh))
+  {
+    has_face[r.face_polygon[std::size_t(f)]] = true;
+    int k = 0;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, r.mesh), r.mesh))
+    {
+      BOOST_CHECK_EQUAL(t.faces[std::size_t(f)][std::size_t(k)], int(target(h, r.mesh)));
+      BOOST_CHECK(SMP::internal::face_corner(r.mesh, h) == std::make_pair(std::size_t(f), k));
+      uv[std::size_t(f)][std::size_t(k++)] = Eigen::Vector2d(uniform(random), uniform(random));
+    }
+  }
+  const auto corner_uv = [&uv](std::size_t f, int k) { return uv[f][std::size_t(k)]; };
+  std::size_t without_face = 0, not_finite = 0, not_flat = 0;
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    std::vector<Eigen::Vector2d> corners;
+    for(std::size_t j = 0; j < polygons[p].size(); ++j)
+      corners.push_back(SMP::internal::input_corner_uv(r, p, j, corner_uv));
+    double area = 0.;
+    for(std::size_t j = 0; j < corners.size(); ++j)
+    {
+      not_finite += corners[j].allFinite() ? 0 : 1;
+      area += corners[j].x() * corners[(j + 1) % corners.size()].y() - corners[(j + 1) % corners.size()].x() * corners[j].y();
+    }
+    without_face += has_face[p] ? 0 : 1;
+    not_flat += (!has_face[p] && zero_area[p] && std::abs(area) > 1e-12) ? 1 : 0;
+  }
+  BOOST_CHECK_EQUAL(not_finite, 0u);
+  BOOST_CHECK_EQUAL(not_flat, 0u);
+  return without_face;
+}
+
+// The Newell normal of a polygon (twice its area vector when planar), about its first point.
 template <class Point>
 Eigen::Vector3d newell_normal(const std::vector<Point>& points, const std::vector<std::size_t>& polygon)
 {
   Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d o = to_eigen(points[polygon[0]]);
   for(std::size_t j = 0; j < polygon.size(); ++j)
-    n += to_eigen(points[polygon[j]]).cross(to_eigen(points[polygon[(j + 1) % polygon.size()]]));
+    n += (to_eigen(points[polygon[j]]) - o).cross(to_eigen(points[polygon[(j + 1) % polygon.size()]]) - o);
   return n;
+}
+
+template <class Point>
+bool is_planar(const std::vector<Point>& points, const std::vector<std::size_t>& polygon)
+{
+  const Eigen::Vector3d n = newell_normal(points, polygon);
+  double size = 0., height = 0.;
+  for(const std::size_t i : polygon)
+  {
+    const Eigen::Vector3d d = to_eigen(points[i]) - to_eigen(points[polygon[0]]);
+    size = (std::max)(size, d.norm());
+    height = (std::max)(height, n.norm() == 0. ? 0. : std::abs(d.dot(n.normalized())));
+  }
+  return height <= 1e-9 * size;
+}
+
+// The 3D area is kept: the faces of the planar input polygons have their area (Newell's) to
+// 1e-12 relative, in all, duplicates of a polygon counted once (their points as a set). A
+// non-planar polygon has no area of its own, but its faces, a surface it bounds, cover at
+// least the norm of its vector area (Newell's). Returns the number of non-planar polygons.
+template <class Point>
+std::size_t check_area(const std::vector<Point>& points, const Polygons& polygons, const Repaired& r)
+{
+  std::vector<double> face_area(polygons.size(), 0.);  // of the faces of each polygon
+  for(face_descriptor f : faces(r.mesh))
+  {
+    const halfedge_descriptor h = halfedge(f, r.mesh);
+    const Eigen::Vector3d a = at(r.mesh, source(h, r.mesh)), b = at(r.mesh, target(h, r.mesh));
+    face_area[r.face_polygon[std::size_t(f)]] += (b - a).cross(at(r.mesh, target(next(h, r.mesh), r.mesh)) - a).norm() / 2.;
+  }
+  std::set<std::vector<std::array<double, 3> > > seen;
+  std::size_t non_planar = 0, uncovered = 0;
+  double expected = 0., got = 0.;
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    std::vector<std::array<double, 3> > key;
+    for(const std::size_t i : polygons[p])
+      key.push_back({{CGAL::to_double(points[i][0]), CGAL::to_double(points[i][1]), CGAL::to_double(points[i][2])}});
+    std::sort(key.begin(), key.end());
+    key.erase(std::unique(key.begin(), key.end()), key.end());
+    const double vector_area = newell_normal(points, polygons[p]).norm() / 2.;
+    const bool first = seen.insert(key).second;
+    if(!is_planar(points, polygons[p]))
+    {
+      ++non_planar;
+      uncovered += (first && face_area[p] < (1. - 1e-12) * vector_area) ? 1 : 0;
+      continue;
+    }
+    expected += first ? vector_area : 0.;
+    got += face_area[p];
+  }
+  BOOST_CHECK_MESSAGE(std::abs(got - expected) <= 1e-12 * expected,
+                      "area of the faces " << got << ", of the input polygons " << expected);
+  BOOST_CHECK_EQUAL(uncovered, 0u);
+  return non_planar;
+}
+
+// Whether each polygon has zero area (the parameterizers' test: twice its area <= 1e-12 times
+// the square of its diameter).
+template <class Point>
+std::vector<bool> zero_area_polygons(const std::vector<Point>& points, const Polygons& polygons)
+{
+  std::vector<bool> zero(polygons.size());
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    double size = 0.;
+    for(const std::size_t i : polygons[p])
+      for(const std::size_t j : polygons[p])
+        size = (std::max)(size, (to_eigen(points[i]) - to_eigen(points[j])).norm());
+    zero[p] = newell_normal(points, polygons[p]).norm() <= 1e-12 * size * size;
+  }
+  return zero;
 }
 
 // Traceability and orientation: the points of every face are points of its input polygon, and
@@ -192,6 +347,20 @@ void check_faces_against_input(const std::vector<Point>& points, const Polygons&
   BOOST_CHECK_EQUAL(foreign, 0u);
   BOOST_CHECK_EQUAL(mixed, 0u);
   BOOST_CHECK_EQUAL(std::size_t(std::count(turn.begin(), turn.end(), -1)), r.report.reoriented_polygons);
+}
+
+// Every property of a repaired soup but the report's counts: the mesh, the faces against the
+// input, every corner's source and UV, the area. Returns the corner counts.
+template <class Point>
+Corner_counts check_repaired(const std::vector<Point>& points, const Polygons& polygons, const Repaired& r,
+                             double tolerance)
+{
+  check_mesh(r);
+  check_faces_against_input(points, polygons, r);
+  const Corner_counts n = check_corners(points, polygons, r, tolerance);
+  check_corner_uvs(polygons, zero_area_polygons(points, polygons), r);
+  check_area(points, polygons, r);
+  return n;
 }
 
 // The counts of two reports, field by field.
@@ -229,9 +398,7 @@ SMP::Soup_repair_report plain_report(const Soup& soup, std::size_t vertices, std
 Corner_counts repair(const Soup& soup, Repaired& r, double tolerance = 1e-12)
 {
   BOOST_REQUIRE_EQUAL(SMP::internal::repair_soup_for_atlas(soup.points, soup.faces, r), SMP::OK);
-  check_mesh(r);
-  check_faces_against_input(soup.points, soup.faces, r);
-  return check_corners(soup.points, soup.faces, r, tolerance);
+  return check_repaired(soup.points, soup.faces, r, tolerance);
 }
 
 Soup square(double x0 = 0.)
@@ -284,6 +451,98 @@ std::size_t faces_facing_up(const Mesh& m)
   return up;
 }
 
+// A vertex shared by two cones: apex 0; a closed fan of 4 triangles up to the ring z = 1,
+// another down to z = -1.
+Soup two_cones()
+{
+  Soup s;
+  s.points.push_back({{0., 0., 0.}});
+  for(double z : {1., -1.})
+    for(int k = 0; k < 4; ++k)
+      s.points.push_back({{std::cos(k * M_PI / 2), std::sin(k * M_PI / 2), z}});
+  for(std::size_t k = 0; k < 4; ++k)
+  {
+    s.faces.push_back({0, 1 + k, 1 + (k + 1) % 4});
+    s.faces.push_back({0, 5 + (k + 1) % 4, 5 + k});
+  }
+  return s;
+}
+
+// A square A B C D (0-3); E F (4, 5) apart; a bow tie G H I G J K (6-10); polygons through a
+// point twice: 3 degenerate ones (one on an edge A B, one on the edge C D, one whose points no
+// face has), one that simplifies to a duplicate, one that splits into two triangles.
+Soup polygons_through_a_point_twice_soup()
+{
+  Soup s = square();
+  s.points.insert(s.points.end(), {{{5., 5., 0.}}, {{6., 5., 0.}}, {{3., 0., 0.}}, {{4., 0., 0.}},
+                                   {{4., 1., 0.}}, {{2., 1., 0.}}, {{2., -1., 0.}}});
+  s.faces.push_back({0, 1, 0});           // 2 points: on the edge A B
+  s.faces.push_back({2, 2, 3, 3});        // 2 points: on the edge C D
+  s.faces.push_back({1, 1, 2, 0});        // A B C once simplified: a duplicate of the first face
+  s.faces.push_back({4, 5, 4});           // 2 points no face has: isolated
+  s.faces.push_back({6, 7, 8, 6, 9, 10}); // two triangles meeting at G
+  return s;
+}
+
+// A grid with every `step`-th face of `s`, from `first`, reversed.
+Soup with_reversed_faces(Soup s, std::size_t first, std::size_t step)
+{
+  for(std::size_t f = first; f < s.faces.size(); f += step)
+    std::reverse(s.faces[f].begin(), s.faces[f].end());
+  return s;
+}
+
+// The working soups of orient_manifold_soup() and of CGAL's orient_polygon_soup() on the same
+// cleaned soup agree: the same polygons reversed, each the same way round, the same pinched
+// points split into the same fans (a corner's point in one always goes with the same point in
+// the other). False, with nothing checked, when the soup is not for orient_manifold_soup().
+template <class Point>
+bool check_orientations_agree(const std::vector<Point>& points, const Polygons& polygons)
+{
+  SMP::Soup_repair_report ours, cgal;
+  SMP::internal::Working_soup<K::Point_3> a;
+  BOOST_REQUIRE_EQUAL(SMP::internal::load_soup(points, polygons, a, ours), SMP::OK);
+  SMP::internal::merge_points(a, ours);
+  SMP::internal::simplify_polygons(a, ours);
+  SMP::internal::merge_polygons(a, ours);
+  SMP::internal::Working_soup<K::Point_3> b = a;
+  cgal = ours;
+  if(!SMP::internal::orient_manifold_soup(a, ours))
+    return false;
+  SMP::internal::orient_with_cgal(b, cgal);
+  check_report(ours, cgal);
+  BOOST_CHECK(a.id_reversed == b.id_reversed);
+  BOOST_REQUIRE_EQUAL(a.polygons.size(), b.polygons.size());
+  BOOST_CHECK_EQUAL(a.points.size(), b.points.size());
+  std::map<std::size_t, std::size_t> a_to_b;
+  std::size_t unmatched = 0, inconsistent = 0;
+  for(std::size_t q = 0; q < a.polygons.size(); ++q)
+  {
+    const auto &pa = a.polygons[q], &pb = b.polygons[q];
+    const std::size_t n = pa.size();
+    BOOST_REQUIRE(pa.id == pb.id && n == pb.size());
+    std::size_t shift = 0;
+    auto same_from = [&](std::size_t k) {
+      for(std::size_t j = 0; j < n; ++j)
+        if(a.point_origin[pa[j]] != b.point_origin[pb[(j + k) % n]])
+          return false;
+      return true;
+    };
+    while(shift < n && !same_from(shift))
+      ++shift;
+    unmatched += shift == n ? 1 : 0;
+    for(std::size_t j = 0; j < n && shift < n; ++j)
+      inconsistent += a_to_b.emplace(pa[j], pb[(j + shift) % n]).first->second != pb[(j + shift) % n] ? 1 : 0;
+  }
+  std::set<std::size_t> images;
+  for(const auto& ab : a_to_b)
+    images.insert(ab.second);
+  BOOST_CHECK_EQUAL(unmatched, 0u);
+  BOOST_CHECK_EQUAL(inconsistent, 0u);
+  BOOST_CHECK_EQUAL(images.size(), a_to_b.size());
+  return true;
+}
+
 } // namespace
 
 // ---------------------------------------------------------------- core tier: generated soups
@@ -301,17 +560,7 @@ BOOST_AUTO_TEST_CASE(two_components_sharing_nothing)
 
 BOOST_AUTO_TEST_CASE(vertex_shared_by_two_cones)
 {
-  // apex 0; a closed fan of 4 triangles up to the ring z = 1, another down to z = -1
-  Soup s;
-  s.points.push_back({{0., 0., 0.}});
-  for(double z : {1., -1.})
-    for(int k = 0; k < 4; ++k)
-      s.points.push_back({{std::cos(k * M_PI / 2), std::sin(k * M_PI / 2), z}});
-  for(std::size_t k = 0; k < 4; ++k)
-  {
-    s.faces.push_back({0, 1 + k, 1 + (k + 1) % 4});
-    s.faces.push_back({0, 5 + (k + 1) % 4, 5 + k});
-  }
+  const Soup s = two_cones();
   Repaired r;
   const Corner_counts n = repair(s, r);
   SMP::Soup_repair_report want = plain_report(s, 10, 8, 2);
@@ -496,19 +745,26 @@ BOOST_AUTO_TEST_CASE(moebius_strip)
   check_report(r.report, want);
   BOOST_CHECK_LE(r.report.reoriented_polygons, 4u);
   BOOST_CHECK_EQUAL(c.on_halfedge, 32u);
+  // the quads are not planar (check_area() leaves them out): each one's two triangles cover it
+  // along one of its diagonals
+  std::vector<double> area(s.faces.size(), 0.);
+  for(face_descriptor f : faces(r.mesh))
+    area[r.face_polygon[std::size_t(f)]] += CGAL::Polygon_mesh_processing::face_area(f, r.mesh);
+  auto triangle = [&s](std::size_t a, std::size_t b, std::size_t c) {
+    return (to_eigen(s.points[b]) - to_eigen(s.points[a])).cross(to_eigen(s.points[c]) - to_eigen(s.points[a])).norm() / 2.;
+  };
+  for(std::size_t p = 0; p < s.faces.size(); ++p)
+  {
+    const std::vector<std::size_t>& q = s.faces[p];
+    const double along_02 = triangle(q[0], q[1], q[2]) + triangle(q[0], q[2], q[3]);
+    const double along_13 = triangle(q[1], q[2], q[3]) + triangle(q[1], q[3], q[0]);
+    BOOST_CHECK(std::abs(area[p] - along_02) <= 1e-12 * along_02 || std::abs(area[p] - along_13) <= 1e-12 * along_13);
+  }
 }
 
 BOOST_AUTO_TEST_CASE(polygons_through_a_point_twice)
 {
-  // a square A B C D (0-3); E F (4, 5) apart; a bow tie G H I G J K (6-10)
-  Soup s = square();
-  s.points.insert(s.points.end(), {{{5., 5., 0.}}, {{6., 5., 0.}}, {{3., 0., 0.}}, {{4., 0., 0.}},
-                                   {{4., 1., 0.}}, {{2., 1., 0.}}, {{2., -1., 0.}}});
-  s.faces.push_back({0, 1, 0});           // 2 points: on the edge A B
-  s.faces.push_back({2, 2, 3, 3});        // 2 points: on the edge C D
-  s.faces.push_back({1, 1, 2, 0});        // A B C once simplified: a duplicate of the first face
-  s.faces.push_back({4, 5, 4});           // 2 points no face has: isolated
-  s.faces.push_back({6, 7, 8, 6, 9, 10}); // two triangles meeting at G
+  const Soup s = polygons_through_a_point_twice_soup();
   Repaired r;
   const Corner_counts n = repair(s, r);
   SMP::Soup_repair_report want = plain_report(s, 10, 4, 3);
@@ -537,29 +793,44 @@ BOOST_AUTO_TEST_CASE(duplicate_points_are_merged)
   check_report(r.report, want);
 }
 
-BOOST_AUTO_TEST_CASE(what_cannot_be_textured_is_an_error)
+// The error for a soup, and nothing output: `r`, filled by an earlier repair, is left empty
+// but for the report. Returns the report.
+SMP::Soup_repair_report expect_error(const Soup& soup, SMP::Error_code expected)
 {
   Repaired r;
+  BOOST_REQUIRE_EQUAL(SMP::internal::repair_soup_for_atlas(square().points, square().faces, r), SMP::OK);
+  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(soup.points, soup.faces, r), expected);
+  BOOST_CHECK(r.mesh.is_empty() && r.mesh.number_of_removed_vertices() == 0);
+  BOOST_CHECK(r.face_polygon.empty() && r.face_component.empty());
+  BOOST_CHECK(r.corner_offset.empty() && r.corners.empty() && r.zero_area_triangles.empty());
+  BOOST_CHECK_EQUAL(r.report.input_polygons, soup.faces.size());
+  return r.report;
+}
+
+BOOST_AUTO_TEST_CASE(what_cannot_be_textured_is_an_error)
+{
   Soup s = square();
   s.points[1][2] = std::numeric_limits<double>::quiet_NaN();
-  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(s.points, s.faces, r), SMP::ERROR_NON_FINITE_COORDINATES);
-  s.points[1][2] = std::numeric_limits<double>::infinity();
-  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(s.points, s.faces, r), SMP::ERROR_NON_FINITE_COORDINATES);
-  const Soup empty;
-  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(empty.points, empty.faces, r), SMP::ERROR_EMPTY_MESH);
+  expect_error(s, SMP::ERROR_NON_FINITE_COORDINATES);
+  s.points[1][2] = -std::numeric_limits<double>::infinity();
+  expect_error(s, SMP::ERROR_NON_FINITE_COORDINATES);
+  s = square();
+  s.points.push_back({{0., std::numeric_limits<double>::infinity(), 0.}});  // no polygon has it: an error all the same
+  expect_error(s, SMP::ERROR_NON_FINITE_COORDINATES);
+  // no face: no polygon, no polygon of 3 distinct points, or all of zero area
+  expect_error(Soup(), SMP::ERROR_EMPTY_MESH);
   Soup degenerate = square();
-  degenerate.faces = {{0, 1, 0}, {2, 2, 2}, {3}};
-  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(degenerate.points, degenerate.faces, r), SMP::ERROR_EMPTY_MESH);
-  BOOST_CHECK_EQUAL(r.report.degenerate_polygons, 3u);
+  degenerate.faces = {{0, 1, 0}, {2, 2, 2}, {3}, {}};
+  BOOST_CHECK_EQUAL(expect_error(degenerate, SMP::ERROR_EMPTY_MESH).degenerate_polygons, 4u);
   Soup flat = square();
   flat.points[2] = {{2., 0., 0.}};
-  flat.faces = {{0, 1, 2}};
-  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(flat.points, flat.faces, r), SMP::ERROR_EMPTY_MESH);
-  BOOST_CHECK_EQUAL(r.report.zero_area_triangles, 1u);
+  flat.faces = {{0, 1, 2}, {2, 1, 0, 3}};
+  flat.points[3] = {{3., 0., 0.}};
+  BOOST_CHECK_EQUAL(expect_error(flat, SMP::ERROR_EMPTY_MESH).zero_area_triangles, 3u);
+  // an index out of range: not a soup
   Soup out_of_range = square();
   out_of_range.faces.push_back({0, 1, 9});
-  BOOST_CHECK_EQUAL(SMP::internal::repair_soup_for_atlas(out_of_range.points, out_of_range.faces, r),
-                    SMP::ERROR_WRONG_PARAMETER);
+  expect_error(out_of_range, SMP::ERROR_WRONG_PARAMETER);
 }
 
 BOOST_AUTO_TEST_CASE(a_soup_that_is_not_a_polygon_mesh_is_built_all_the_same)
@@ -586,6 +857,39 @@ BOOST_AUTO_TEST_CASE(a_soup_that_is_not_a_polygon_mesh_is_built_all_the_same)
   BOOST_CHECK(soup.polygons[1] == std::vector<std::size_t>({4, 5, 6}));
   for(std::size_t k = 0; k < 3; ++k)  // the copies stand for the points they copy
     BOOST_CHECK_EQUAL(get(w.vertex_point, vertex_descriptor(std::uint32_t(4 + k))), std::vector<std::size_t>({0, 1, 3})[k]);
+}
+
+BOOST_AUTO_TEST_CASE(orientation_without_cgal_agrees_with_cgal)
+{
+  // the soups orient_manifold_soup() takes: pinched vertices with closed fans or open ones,
+  // reversed faces, a component mostly reversed; not those with a non-manifold edge or a
+  // non-orientable piece, which it leaves to CGAL
+  Soup pinched_and_flipped = with_reversed_faces(two_cones(), 1, 3);
+  append(pinched_and_flipped, with_reversed_faces(grid(6), 0, 2));
+  append(pinched_and_flipped, polygons_through_a_point_twice_soup());
+  BOOST_CHECK(check_orientations_agree(pinched_and_flipped.points, pinched_and_flipped.faces));
+  BOOST_CHECK(check_orientations_agree(grid(4).points, with_reversed_faces(grid(4), 3, 1).faces));
+  Soup three_faces;
+  three_faces.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{.5, 1., 0.}}, {{.5, -1., 0.}}, {{.5, 0., 1.}}};
+  three_faces.faces = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  BOOST_CHECK(!check_orientations_agree(three_faces.points, three_faces.faces));
+  Soup strip = grid(2);  // a strip whose ends are glued the wrong way: not orientable
+  strip.faces = {{0, 1, 4, 3}, {1, 2, 5, 4}, {2, 3, 0, 5}};
+  BOOST_CHECK(!check_orientations_agree(strip.points, strip.faces));
+}
+
+BOOST_AUTO_TEST_CASE(the_independent_manifold_check_sees_the_defects)
+{
+  typedef std::vector<std::array<std::size_t, 3> > Triangles;
+  auto defects = [](const Triangles& t) { return manifold_defects(t); };
+  BOOST_CHECK(defects(Triangles{{{0, 1, 2}}, {{1, 0, 3}}}) == std::make_pair(std::size_t(0), std::size_t(0)));
+  BOOST_CHECK(defects(Triangles{{{0, 1, 2}}, {{0, 1, 3}}}).first == 1u);   // a flipped neighbour
+  BOOST_CHECK(defects(Triangles{{{0, 1, 2}}, {{1, 0, 3}}, {{0, 1, 4}}}).first == 1u);  // three faces
+  BOOST_CHECK(defects(Triangles{{{0, 1, 2}}, {{0, 3, 4}}}).second == 1u);  // two fans at 0
+  Triangles cones;  // two closed fans at 0
+  for(const std::vector<std::size_t>& f : two_cones().faces)
+    cones.push_back({{f[0], f[1], f[2]}});
+  BOOST_CHECK(defects(cones) == std::make_pair(std::size_t(0), std::size_t(1)));
 }
 
 BOOST_AUTO_TEST_CASE(triangle_mesh_given_directly)
@@ -616,19 +920,15 @@ BOOST_AUTO_TEST_CASE(triangle_mesh_given_directly)
 
 namespace {
 
-// The atlas meshes: MBP_ATLAS_MESH_DIR when set, else the folder atlas beside the project's
-// meshes (MBP_SHARED_MESH_DIR: ../shared/data/meshes, so ../shared/data/atlas).
-std::string atlas_mesh_dir()
+// The atlas meshes: the folder atlas beside the project's meshes of the extended tier
+// (MBP_SHARED_MESH_DIR, ../shared/data/meshes: so ../shared/data/atlas). The test fails when
+// it is missing: CTest runs the extended tier only when the project's meshes are there.
+std::string atlas_mesh(const std::string& name)
 {
-  const char* dir = std::getenv("MBP_ATLAS_MESH_DIR");
-  return (dir != nullptr && *dir != '\0') ? std::string(dir) : mbp_test::shared_mesh_dir() + "/../atlas";
-}
-
-boost::test_tools::assertion_result atlas_meshes_present(boost::unit_test::test_unit_id)
-{
-  boost::test_tools::assertion_result present(mbp_test::file_exists(atlas_mesh_dir() + "/PROVENANCE.md"));
-  present.message() << "the atlas meshes are not in " << atlas_mesh_dir() << " (MBP_ATLAS_MESH_DIR)";
-  return present;
+  const std::string path = mbp_test::shared_mesh_dir() + "/../atlas/" + name;
+  BOOST_REQUIRE_MESSAGE(mbp_test::file_exists(path), "missing atlas mesh " << path
+                        << " (the extended tier needs ../atlas beside MBP_SHARED_MESH_DIR)");
+  return path;
 }
 
 // The counts of PROVENANCE.md that the report can be held to, -1 where not comparable.
@@ -698,7 +998,7 @@ void print_report(const std::string& file, const SMP::Soup_repair_report& r, con
 
 } // namespace
 
-BOOST_AUTO_TEST_CASE(atlas_meshes_repaired, MBP_EXTENDED_TIER * boost::unit_test::precondition(atlas_meshes_present))
+BOOST_AUTO_TEST_CASE(atlas_meshes_repaired, MBP_EXTENDED_TIER)
 {
   for(const Provenance& mesh : atlas_meshes)
   {
@@ -706,18 +1006,23 @@ BOOST_AUTO_TEST_CASE(atlas_meshes_repaired, MBP_EXTENDED_TIER * boost::unit_test
     {
       std::vector<K::Point_3> points;
       Polygons polygons;
-      BOOST_REQUIRE(CGAL::IO::read_polygon_soup(atlas_mesh_dir() + "/" + mesh.file, points, polygons));
+      BOOST_REQUIRE(CGAL::IO::read_polygon_soup(atlas_mesh(mesh.file), points, polygons));
       Repaired r;
       const auto start = std::chrono::steady_clock::now();
       BOOST_REQUIRE_EQUAL(SMP::internal::repair_soup_for_atlas(points, polygons, r), SMP::OK);
-      BOOST_TEST_MESSAGE(mesh.file << ": repaired in "
-                         << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s");
-      check_mesh(r);
-      check_faces_against_input(points, polygons, r);
-      CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const CGAL::Bbox_3 box = CGAL::bbox_3(points.begin(), points.end());
       const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                         CGAL::square(box.zmax() - box.zmin()));
+      check_mesh(r);
+      check_faces_against_input(points, polygons, r);
       const Corner_counts n = check_corners(points, polygons, r, 1e-9 * diagonal);
+      const bool ours = check_orientations_agree(points, polygons);
+      const std::size_t non_planar = check_area(points, polygons, r);
+      const std::size_t without_face = check_corner_uvs(polygons, zero_area_polygons(points, polygons), r);
+      BOOST_TEST_MESSAGE(mesh.file << ": repaired in " << seconds << " s, oriented by "
+                         << (ours ? "orient_manifold_soup()" : "CGAL") << "; " << non_planar
+                         << " non-planar polygons, " << without_face << " polygons without a face");
       print_report(mesh.file, r.report, n);
       check_provenance(mesh, r.report);
     }

@@ -29,6 +29,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -76,25 +77,23 @@ bool to_working_point(const InputPoint& p, Point_3& q)
   return std::isfinite(x) && std::isfinite(y) && std::isfinite(z);
 }
 
-// Copies the input soup. ERROR_NON_FINITE_COORDINATES for a point that is not finite (it
-// cannot be ordered, so not even merged), ERROR_WRONG_PARAMETER for an index out of range.
+// Copies the input soup, its counts into the report. ERROR_WRONG_PARAMETER for an index out
+// of range, ERROR_NON_FINITE_COORDINATES for a point that is not finite (it cannot be
+// ordered, so not even merged).
 template <class Point_3, class PointRange, class PolygonRange>
 Error_code load_soup(const PointRange& points, const PolygonRange& polygons, Working_soup<Point_3>& soup,
                      Soup_repair_report& report)
 {
-  for(const auto& p : points)
-  {
-    soup.points.emplace_back();
-    if(!to_working_point(p, soup.points.back()))
-      return ERROR_NON_FINITE_COORDINATES;
-  }
+  report.input_points = static_cast<std::size_t>(std::distance(std::begin(points), std::end(points)));
+  report.input_polygons = static_cast<std::size_t>(std::distance(std::begin(polygons), std::end(polygons)));
+  soup.polygons.reserve(report.input_polygons);
   soup.corner_offset.assign(1, 0);
   for(const auto& polygon : polygons)
   {
     Soup_polygon copy;
     for(const auto i : polygon)
     {
-      if(static_cast<std::size_t>(i) >= soup.points.size())
+      if(static_cast<std::size_t>(i) >= report.input_points)
         return ERROR_WRONG_PARAMETER;
       copy.push_back(static_cast<std::size_t>(i));
     }
@@ -102,9 +101,12 @@ Error_code load_soup(const PointRange& points, const PolygonRange& polygons, Wor
     soup.corner_offset.push_back(soup.corner_offset.back() + copy.size());
     soup.polygons.push_back(std::move(copy));
   }
-  report.input_points = soup.points.size();
-  report.input_polygons = soup.polygons.size();
   report.input_corners = soup.corner_offset.back();
+  soup.points.resize(report.input_points);
+  std::size_t k = 0;
+  for(const auto& p : points)
+    if(!to_working_point(p, soup.points[k++]))
+      return ERROR_NON_FINITE_COORDINATES;
   return OK;
 }
 
