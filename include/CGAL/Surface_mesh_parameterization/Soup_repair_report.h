@@ -19,11 +19,18 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
-/// The repairs made to a polygon soup (points and polygons as read by CGAL's readers) to turn
-/// it into a triangle mesh whose connected components can be parameterized one by one. No
-/// input polygon is lost: every corner of every input polygon gets its UV from the repaired
-/// mesh. Counts of polygons are counts of input polygons; counts of points are counts of
+/// The repairs made to a polygon soup (points and polygons as read by CGAL's readers, e.g.
+/// `CGAL::IO::read_polygon_soup()`) to turn it into a triangle mesh whose connected components
+/// can be parameterized one by one: valid, of triangles of nonzero area, consistently oriented,
+/// manifold. No input polygon is lost: every corner of every input polygon gets its UV from a
+/// face of the repaired mesh; a polygon of zero area gets a UV polygon of zero area inside a
+/// chart. Counts of polygons are counts of input polygons; counts of points are counts of
 /// input points after duplicate points are merged.
+///
+/// Only what cannot be textured at all is an error, and gives no mesh: a soup with no face
+/// left (no polygon of three distinct points, or all of zero area), a point with a
+/// non-finite coordinate, an index out of range. The report then says what was found up to
+/// the error.
 struct Soup_repair_report
 {
   /// \name The input
@@ -62,8 +69,8 @@ struct Soup_repair_report
   /// polygons whose orientation was reversed: in each connected component the orientation
   /// of the majority of its polygons is kept
   std::size_t reoriented_polygons = 0;
-  /// polygons that the oriented soup still could not attach to the mesh (none is expected):
-  /// given their own copies of their points
+  /// polygons that the oriented soup still could not attach to the mesh (none is expected:
+  /// a safeguard): given their own copies of their points
   std::size_t detached_polygons = 0;
   /// @}
 
@@ -90,7 +97,9 @@ struct Soup_repair_report
   /// corners placed at a point of a face kept other than their own (corners of degenerate or
   /// zero-area polygons that share no edge with a face kept)
   std::size_t collapsed_corners = 0;
-  /// corners whose point is on no face of the repaired mesh: they get a UV of their own
+  /// corners whose point is on no face of the repaired mesh (of degenerate or zero-area
+  /// polygons apart from every face kept): the corners of such a polygon all get the UV of
+  /// the vertex of the repaired mesh nearest to the first of them
   std::size_t isolated_corners = 0;
   /// @}
 };
