@@ -38,10 +38,10 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-// A polygon of the working soup, with an id that follows it through CGAL's soup functions.
-// merge_duplicate_polygons_in_polygon_soup() moves polygons around and erases the
-// duplicates without saying which; a soup's polygons only have to be random access
-// containers of point indices, so a vector with one more member passes through unchanged.
+// A polygon of the working soup, with an id that follows it through the soup functions (the
+// merges erase polygons; CGAL's orient_polygon_soup() reverses them in place): a soup's
+// polygons only have to be random access containers of point indices, so a vector with one
+// more member passes through CGAL's functions unchanged.
 struct Soup_polygon : std::vector<std::size_t>
 {
   std::size_t id = 0;
@@ -52,7 +52,7 @@ struct Working_soup
 {
   std::vector<Point_3> points;
   std::vector<Soup_polygon> polygons;
-  // per working point: the merged point it copies (orient_polygon_soup() adds copies)
+  // per working point: the merged point it copies (the orientation adds copies)
   std::vector<std::size_t> point_origin;
   // per input polygon p: its corners [corner_offset[p], corner_offset[p+1]) and its working
   // polygons, by id, [id_offset[p], id_offset[p+1]) (none when degenerate, several when split)
