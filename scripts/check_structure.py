@@ -48,7 +48,7 @@ leaf = {f for f in public if not any(i.startswith('internal/') for i in package_
 for layer in os.listdir(os.path.join(package, 'internal')):
     folder = os.path.join(package, 'internal', layer)
     if not os.path.isdir(folder):
-        problems.append(f'internal/{layer}: a file outside the layers core, distances, borders, seams')
+        problems.append(f'internal/{layer}: a file outside the layers core, distances, borders, seams, atlas')
         continue
     for f in sorted(os.listdir(folder)):
         for inc in package_includes(os.path.join(folder, f)):
