@@ -15,6 +15,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include "atlas_soups.h"
 #include "test_support.h"
 
 #include <CGAL/Simple_cartesian.h>
@@ -55,6 +56,7 @@ typedef boost::graph_traits<Mesh>::halfedge_descriptor       halfedge_descriptor
 typedef boost::graph_traits<Mesh>::face_descriptor           face_descriptor;
 typedef std::vector<std::vector<std::size_t> >               Polygons;
 using mbp_test::Soup;
+using namespace mbp_test;
 
 namespace {
 
@@ -401,44 +403,6 @@ Corner_counts repair(const Soup& soup, Repaired& r, double tolerance = 1e-12)
   return check_repaired(soup.points, soup.faces, r, tolerance);
 }
 
-Soup square(double x0 = 0.)
-{
-  Soup s;
-  s.points = {{{x0, 0., 0.}}, {{x0 + 1., 0., 0.}}, {{x0 + 1., 1., 0.}}, {{x0, 1., 0.}}};
-  s.faces = {{0, 1, 2}, {0, 2, 3}};
-  return s;
-}
-
-void append(Soup& soup, const Soup& other)
-{
-  const std::size_t offset = soup.points.size();
-  soup.points.insert(soup.points.end(), other.points.begin(), other.points.end());
-  for(std::vector<std::size_t> polygon : other.faces)
-  {
-    for(std::size_t& i : polygon)
-      i += offset;
-    soup.faces.push_back(polygon);
-  }
-}
-
-// An n x n grid of unit squares in z = 0, two triangles each, turning counterclockwise
-// seen from +z.
-Soup grid(int n)
-{
-  Soup s;
-  for(int j = 0; j <= n; ++j)
-    for(int i = 0; i <= n; ++i)
-      s.points.push_back({{double(i), double(j), 0.}});
-  auto id = [n](int i, int j) { return std::size_t(j * (n + 1) + i); };
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i)
-    {
-      s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      s.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  return s;
-}
-
 std::size_t faces_facing_up(const Mesh& m)
 {
   std::size_t up = 0;
@@ -449,47 +413,6 @@ std::size_t faces_facing_up(const Mesh& m)
     up += (b - a).cross(c - a).z() > 0. ? 1 : 0;
   }
   return up;
-}
-
-// A vertex shared by two cones: apex 0; a closed fan of 4 triangles up to the ring z = 1,
-// another down to z = -1.
-Soup two_cones()
-{
-  Soup s;
-  s.points.push_back({{0., 0., 0.}});
-  for(double z : {1., -1.})
-    for(int k = 0; k < 4; ++k)
-      s.points.push_back({{std::cos(k * M_PI / 2), std::sin(k * M_PI / 2), z}});
-  for(std::size_t k = 0; k < 4; ++k)
-  {
-    s.faces.push_back({0, 1 + k, 1 + (k + 1) % 4});
-    s.faces.push_back({0, 5 + (k + 1) % 4, 5 + k});
-  }
-  return s;
-}
-
-// A square A B C D (0-3); E F (4, 5) apart; a bow tie G H I G J K (6-10); polygons through a
-// point twice: 3 degenerate ones (one on an edge A B, one on the edge C D, one whose points no
-// face has), one that simplifies to a duplicate, one that splits into two triangles.
-Soup polygons_through_a_point_twice_soup()
-{
-  Soup s = square();
-  s.points.insert(s.points.end(), {{{5., 5., 0.}}, {{6., 5., 0.}}, {{3., 0., 0.}}, {{4., 0., 0.}},
-                                   {{4., 1., 0.}}, {{2., 1., 0.}}, {{2., -1., 0.}}});
-  s.faces.push_back({0, 1, 0});           // 2 points: on the edge A B
-  s.faces.push_back({2, 2, 3, 3});        // 2 points: on the edge C D
-  s.faces.push_back({1, 1, 2, 0});        // A B C once simplified: a duplicate of the first face
-  s.faces.push_back({4, 5, 4});           // 2 points no face has: isolated
-  s.faces.push_back({6, 7, 8, 6, 9, 10}); // two triangles meeting at G
-  return s;
-}
-
-// A grid with every `step`-th face of `s`, from `first`, reversed.
-Soup with_reversed_faces(Soup s, std::size_t first, std::size_t step)
-{
-  for(std::size_t f = first; f < s.faces.size(); f += step)
-    std::reverse(s.faces[f].begin(), s.faces[f].end());
-  return s;
 }
 
 // The working soups of orient_manifold_soup() and of CGAL's orient_polygon_soup() on the same
@@ -572,9 +495,7 @@ BOOST_AUTO_TEST_CASE(vertex_shared_by_two_cones)
 
 BOOST_AUTO_TEST_CASE(edge_with_three_faces)
 {
-  Soup s;
-  s.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{.5, 1., 0.}}, {{.5, -1., 0.}}, {{.5, 0., 1.}}};
-  s.faces = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}};
+  Soup s = edge_with_three_faces();
   Repaired r;
   const Corner_counts n = repair(s, r);
   SMP::Soup_repair_report want = plain_report(s, 9, 3, 3);
@@ -631,9 +552,7 @@ BOOST_AUTO_TEST_CASE(zero_area_face_on_the_edge_of_a_face_kept)
   // A(0) B(1) C(2) M(3) E(4): the sliver A M B (M the middle of AB) lies along the edge AB
   // of the face A B C, across its longest edge. It is the only link between A B C and the two
   // faces below A M B: removed, it leaves A and B pinched, split into two components.
-  Soup s;
-  s.points = {{{0., 0., 0.}}, {{2., 0., 0.}}, {{1., 1., 0.}}, {{1., 0., 0.}}, {{1., -1., 0.}}};
-  s.faces = {{0, 1, 2}, {0, 4, 3}, {3, 4, 1}, {0, 3, 1}};
+  Soup s = zero_area_face_on_an_edge();
   Repaired r;
   const Corner_counts n = repair(s, r);
   SMP::Soup_repair_report want = plain_report(s, 7, 3, 2);
@@ -672,10 +591,7 @@ BOOST_AUTO_TEST_CASE(zero_area_face_whose_removal_pinches_vertices)
 
 BOOST_AUTO_TEST_CASE(quads_and_a_pentagon)
 {
-  Soup s;
-  s.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{2., 0., 0.}}, {{0., 1., 0.}}, {{1., 1., 0.}}, {{2., 1., 0.}},
-              {{1.2, 1.8, 0.}}, {{.5, 2.3, 0.}}, {{-.2, 1.8, 0.}}};
-  s.faces = {{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 6, 7, 8}};
+  Soup s = quads_and_a_pentagon_soup();
   Repaired r;
   const Corner_counts n = repair(s, r);
   SMP::Soup_repair_report want = plain_report(s, 9, 7);
@@ -721,19 +637,7 @@ BOOST_AUTO_TEST_CASE(moebius_strip)
 {
   // 8 quads around a circle, the strip's direction turning half a turn: the last quad meets
   // the first upside down
-  const int n = 8;
-  Soup s;
-  for(int i = 0; i < n; ++i)
-  {
-    const double a = 2 * M_PI * i / n;
-    const Eigen::Vector3d c(std::cos(a), std::sin(a), 0.);
-    const Eigen::Vector3d w = std::cos(a / 2) * c + std::sin(a / 2) * Eigen::Vector3d::UnitZ();
-    for(double side : {-.25, .25})
-      s.points.push_back({{c.x() + side * w.x(), c.y() + side * w.y(), c.z() + side * w.z()}});
-  }
-  for(std::size_t i = 0; i + 1 < std::size_t(n); ++i)
-    s.faces.push_back({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
-  s.faces.push_back({2 * (n - 1), 1, 0, 2 * (n - 1) + 1});
+  Soup s = moebius_strip_soup(8);
   Repaired r;
   const Corner_counts c = repair(s, r);
   SMP::Soup_repair_report want = plain_report(s, 18, 16);

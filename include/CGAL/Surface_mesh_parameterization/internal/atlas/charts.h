@@ -16,6 +16,8 @@
 // isometric unfolding of a small chart along a spanning tree of its faces, the validity of a
 // chart (no flipped triangle, no two overlapping triangles) and its distortion figures.
 
+#include <CGAL/Surface_mesh_parameterization/Atlas_report.h>
+
 #include <CGAL/Surface_mesh_parameterization/internal/core/angle_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/triangle_adjacency.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
@@ -42,9 +44,6 @@ struct Atlas_triangles
   std::vector<Eigen::Vector3d> points;
   std::vector<Face_indices> faces;
 };
-
-// How a chart was flattened.
-enum Chart_flattening { DISK_CHART, SEAMED_CHART, UNFOLDED_CHART };
 
 // A chart: faces of the triangle set and the UV of each face corner (corner k of a face is
 // its vertex faces[f][k]).

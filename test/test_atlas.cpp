@@ -1,0 +1,425 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+// The texture atlas from end to end (issue 22): compute_atlas_of_polygon_soup() and
+// compute_atlas() on soups with each defect users' files have, on CGAL's data meshes (core
+// tier) and on the meshes of ../shared/data/atlas (extended tier). Every check is made on the
+// output alone, by code that knows nothing of the package (atlas_check.h and the functions
+// below): every input corner has a finite UV in the square, no two UV triangles overlap (in a
+// chart or across charts), charts are a gutter apart and from the border, no triangle is
+// flipped, and UV area over 3D area is the same in every chart.
+
+#include <boost/test/unit_test.hpp>
+
+#include "atlas_check.h"
+#include "atlas_soups.h"
+#include "test_support.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <CGAL/Surface_mesh_parameterization/compute_atlas.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+BOOST_AUTO_TEST_SUITE(atlas)
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+typedef CGAL::Simple_cartesian<double> K;
+typedef K::Point_2                     Point_2;
+typedef K::Point_3                     Point_3;
+using mbp_test::Soup;
+
+namespace {
+
+struct Atlas_output
+{
+  std::vector<std::vector<Point_2> > uvs;
+  std::vector<std::size_t> charts;
+  SMP::Atlas_report report;
+};
+
+template <class Points, class Polygons>
+Atlas_output atlas_of(const Points& points, const Polygons& polygons, const SMP::Atlas_options& options = {})
+{
+  Atlas_output out;
+  BOOST_REQUIRE_EQUAL(SMP::compute_atlas_of_polygon_soup(points, polygons, out.uvs, out.charts, options, &out.report),
+                      SMP::OK);
+  return out;
+}
+
+template <class P>
+Eigen::Vector3d at(const P& p)
+{
+  return Eigen::Vector3d(CGAL::to_double(p[0]), CGAL::to_double(p[1]), CGAL::to_double(p[2]));
+}
+
+// Twice the signed area of a UV polygon (the shoelace formula).
+double twice_uv_area(const std::vector<Point_2>& uv)
+{
+  double sum = 0.;
+  for(std::size_t j = 0; j < uv.size(); ++j)
+  {
+    const Point_2 &a = uv[j], &b = uv[(j + 1) % uv.size()];
+    sum += a.x() * b.y() - a.y() * b.x();
+  }
+  return sum;
+}
+
+// The area of a planar 3D polygon (half the norm of Newell's normal).
+template <class Points>
+double polygon_area(const Points& points, const std::vector<std::size_t>& polygon)
+{
+  Eigen::Vector3d n = Eigen::Vector3d::Zero();
+  for(std::size_t j = 0; j < polygon.size(); ++j)
+    n += at(points[polygon[j]]).cross(at(points[polygon[(j + 1) % polygon.size()]]));
+  return n.norm() / 2.;
+}
+
+// Every input corner has a finite UV at least a gutter from the border of the square, and
+// every polygon a chart of the report.
+template <class Polygons>
+void check_corners(const Polygons& polygons, const Atlas_output& a, double gutter)
+{
+  BOOST_REQUIRE_EQUAL(a.uvs.size(), polygons.size());
+  BOOST_REQUIRE_EQUAL(a.charts.size(), polygons.size());
+  std::size_t missing = 0, outside = 0;
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    missing += a.uvs[p].size() == polygons[p].size() ? 0 : 1;
+    BOOST_CHECK_LT(a.charts[p], a.report.charts.size());
+    for(const Point_2& uv : a.uvs[p])
+      outside += std::isfinite(uv.x()) && std::isfinite(uv.y()) && uv.x() >= gutter * (1 - 1e-9) &&
+                         uv.y() >= gutter * (1 - 1e-9) && uv.x() <= 1 - gutter * (1 - 1e-9) &&
+                         uv.y() <= 1 - gutter * (1 - 1e-9)
+                     ? 0
+                     : 1;
+  }
+  BOOST_CHECK_EQUAL(missing, 0u);
+  BOOST_CHECK_EQUAL(outside, 0u);
+}
+
+// The UV triangles of each chart: every polygon fanned from its first corner.
+void chart_triangles(const Atlas_output& a, std::vector<std::vector<Eigen::Vector2d> >& uv,
+                     std::vector<std::vector<std::array<int, 3> > >& triangles)
+{
+  uv.assign(a.report.charts.size(), {});
+  triangles.assign(a.report.charts.size(), {});
+  for(std::size_t p = 0; p < a.uvs.size(); ++p)
+  {
+    const std::size_t c = a.charts[p];
+    const int first = int(uv[c].size());
+    for(const Point_2& q : a.uvs[p])
+      uv[c].emplace_back(q.x(), q.y());
+    for(int j = 1; j + 1 < int(a.uvs[p].size()); ++j)
+      triangles[c].push_back({{first, first + j, first + j + 1}});
+  }
+}
+
+// Pairs of UV triangles of one chart whose interiors overlap: each triangle of nonzero area is
+// shrunk towards its centroid by a millionth of its size, so that neighbors sharing an edge or
+// a vertex are apart, then the exact test of atlas_check.h says whether two of them meet.
+std::size_t overlaps_inside_charts(const std::vector<std::vector<Eigen::Vector2d> >& uv,
+                                   const std::vector<std::vector<std::array<int, 3> > >& triangles)
+{
+  std::size_t pairs = 0;
+  for(std::size_t c = 0; c < uv.size(); ++c)
+  {
+    std::vector<mbp_atlas_check::Triangle> shrunk;
+    for(const std::array<int, 3>& t : triangles[c])
+    {
+      const Eigen::Vector2d a = uv[c][std::size_t(t[0])], b = uv[c][std::size_t(t[1])], d = uv[c][std::size_t(t[2])];
+      const Eigen::Vector2d g = (a + b + d) / 3.;
+      if(std::abs((b - a).x() * (d - a).y() - (b - a).y() * (d - a).x()) <= 1e-24)
+        continue;
+      auto pull = [&g](const Eigen::Vector2d& p) {
+        const Eigen::Vector2d q = p + 1e-6 * (g - p);
+        return mbp_atlas_check::K::Point_2(q.x(), q.y());
+      };
+      shrunk.push_back({{pull(a), pull(b), pull(d)}});
+    }
+    double distance = 0.;
+    for(std::size_t i = 0; i < shrunk.size(); ++i)
+      for(std::size_t j = i + 1; j < shrunk.size(); ++j)
+        pairs += mbp_atlas_check::triangles_meet(shrunk[i], shrunk[j], distance) ? 1 : 0;
+  }
+  return pairs;
+}
+
+// No overlap in a chart or across charts, the gutter kept between charts (small soups: the
+// pairwise test inside charts is quadratic).
+void check_layout(const Atlas_output& a, const SMP::Atlas_options& options)
+{
+  std::vector<std::vector<Eigen::Vector2d> > uv;
+  std::vector<std::vector<std::array<int, 3> > > triangles;
+  chart_triangles(a, uv, triangles);
+  const double gutter = double(options.gutter) / options.resolution;
+  const mbp_atlas_check::Atlas_check check = mbp_atlas_check::check_atlas(uv, triangles, gutter);
+  BOOST_CHECK_EQUAL(check.non_finite, 0u);
+  BOOST_CHECK_EQUAL(check.outside, 0u);
+  BOOST_CHECK_EQUAL(check.overlapping_pairs, 0u);
+  BOOST_CHECK_EQUAL(check.close_pairs, 0u);
+  BOOST_CHECK_EQUAL(overlaps_inside_charts(uv, triangles), 0u);
+}
+
+// UV area over 3D area, chart by chart, for soups of planar polygons: equal in every chart
+// of nonzero area (one texel density), and equal to the report's density squared.
+template <class Points, class Polygons>
+void check_density(const Points& points, const Polygons& polygons, const Atlas_output& a)
+{
+  std::vector<double> area_3d(a.report.charts.size(), 0.), area_uv(a.report.charts.size(), 0.);
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    area_3d[a.charts[p]] += polygon_area(points, polygons[p]);
+    area_uv[a.charts[p]] += std::abs(twice_uv_area(a.uvs[p])) / 2.;
+  }
+  const double density = a.report.texel_density * a.report.texel_density;
+  for(std::size_t c = 0; c < area_3d.size(); ++c)
+    if(area_3d[c] > 1e-12)
+      BOOST_CHECK_CLOSE(area_uv[c] / area_3d[c], density, 1e-7);  // percent: 1e-9 relative
+}
+
+// Polygons (of nonzero 3D area) whose UV polygon turns clockwise: none for a consistently
+// oriented soup (the repair keeps the majority's orientation).
+template <class Points, class Polygons>
+std::size_t clockwise_polygons(const Points& points, const Polygons& polygons, const Atlas_output& a)
+{
+  std::size_t clockwise = 0;
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+    if(polygon_area(points, polygons[p]) > 1e-12)
+      clockwise += twice_uv_area(a.uvs[p]) < 0. ? 1 : 0;
+  return clockwise;
+}
+
+// The checks every atlas passes; `planar`: the density check applies.
+Atlas_output check_soup(const Soup& s, bool planar = true, const SMP::Atlas_options& options = {})
+{
+  const Atlas_output a = atlas_of(s.points, s.faces, options);
+  check_corners(s.faces, a, double(options.gutter) / options.resolution);
+  check_layout(a, options);
+  if(planar)
+    check_density(s.points, s.faces, a);
+  BOOST_CHECK_GT(a.report.utilization, 0.);
+  BOOST_CHECK_LE(a.report.utilization, 1.);
+  return a;
+}
+
+} // namespace
+
+// ------------------------------------------------------------------ core tier: one defect each
+
+BOOST_AUTO_TEST_CASE(two_components_sharing_nothing)
+{
+  Soup s = mbp_test::grid(3);
+  Soup far = mbp_test::grid(2);
+  for(auto& p : far.points)
+    p[0] += 10.;
+  mbp_test::append(s, far);
+  const Atlas_output a = check_soup(s);
+  BOOST_CHECK_EQUAL(a.report.repair.components, 2u);
+  BOOST_CHECK_EQUAL(a.report.charts.size(), 2u);
+  BOOST_CHECK(a.charts.front() != a.charts.back());
+  BOOST_CHECK_EQUAL(clockwise_polygons(s.points, s.faces, a), 0u);
+}
+
+BOOST_AUTO_TEST_CASE(vertex_shared_by_two_cones)
+{
+  const Soup s = mbp_test::two_cones();
+  const Atlas_output a = check_soup(s);
+  BOOST_CHECK_EQUAL(a.report.repair.pinched_vertices, 1u);
+  BOOST_CHECK_EQUAL(clockwise_polygons(s.points, s.faces, a), 0u);
+}
+
+BOOST_AUTO_TEST_CASE(edge_with_three_faces)
+{
+  const Soup s = mbp_test::edge_with_three_faces();
+  const Atlas_output a = check_soup(s);
+  BOOST_CHECK_EQUAL(a.report.repair.non_manifold_edges, 1u);
+}
+
+BOOST_AUTO_TEST_CASE(flipped_faces)
+{
+  const Soup s = mbp_test::with_reversed_faces(mbp_test::grid(4), 1, 7);
+  const Atlas_output a = check_soup(s);
+  const std::size_t reversed = (s.faces.size() - 1 + 6) / 7;
+  BOOST_CHECK_EQUAL(a.report.repair.reoriented_polygons, reversed);
+  // the reversed faces, in their input order, turn the other way in UV: nothing else does
+  BOOST_CHECK_EQUAL(clockwise_polygons(s.points, s.faces, a), reversed);
+}
+
+BOOST_AUTO_TEST_CASE(duplicated_face)
+{
+  Soup s = mbp_test::grid(2);
+  s.faces.push_back(s.faces[3]);
+  const Atlas_output a = check_soup(s, false);  // the duplicate's area counts twice
+  BOOST_CHECK_EQUAL(a.report.repair.duplicate_polygons, 1u);
+  BOOST_CHECK(a.uvs.back() == a.uvs[3]);
+}
+
+BOOST_AUTO_TEST_CASE(zero_area_face)
+{
+  const Soup s = mbp_test::zero_area_face_on_an_edge();
+  const Atlas_output a = check_soup(s);
+  BOOST_CHECK_EQUAL(a.report.repair.zero_area_triangles, 1u);
+  // the sliver (polygon 3) gets a zero-area UV triangle, inside the square
+  BOOST_CHECK_SMALL(twice_uv_area(a.uvs[3]), 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(quads_and_a_pentagon)
+{
+  const Soup s = mbp_test::quads_and_a_pentagon_soup();
+  const Atlas_output a = check_soup(s);
+  BOOST_CHECK_EQUAL(a.report.repair.triangulated_polygons, 3u);
+  BOOST_CHECK_EQUAL(clockwise_polygons(s.points, s.faces, a), 0u);
+}
+
+BOOST_AUTO_TEST_CASE(moebius_strip)
+{
+  const Soup s = mbp_test::moebius_strip_soup(12);
+  const Atlas_output a = check_soup(s, false);  // non-planar quads
+  BOOST_CHECK_EQUAL(a.report.repair.non_orientable_components, 1u);
+}
+
+BOOST_AUTO_TEST_CASE(gutter_and_resolution_are_kept)
+{
+  Soup s;
+  for(int k = 0; k < 6; ++k)
+  {
+    Soup piece = mbp_test::grid(1 + k % 3);
+    for(auto& p : piece.points)
+      p = {{p[0] * (1 + k), p[1], p[2] + 3. * k}};
+    mbp_test::append(s, piece);
+  }
+  SMP::Atlas_options options;
+  options.resolution = 128;
+  options.gutter = 5;
+  const Atlas_output a = check_soup(s, true, options);
+  BOOST_CHECK_EQUAL(a.report.charts.size(), 6u);
+}
+
+BOOST_AUTO_TEST_CASE(what_cannot_be_textured_is_an_error)
+{
+  std::vector<std::vector<Point_2> > uvs(1, std::vector<Point_2>(3));
+  std::vector<std::size_t> charts(1, 7);
+  const std::vector<Point_3> none;
+  const std::vector<std::vector<std::size_t> > no_polygon;
+  BOOST_CHECK_EQUAL(SMP::compute_atlas_of_polygon_soup(none, no_polygon, uvs, charts), SMP::ERROR_EMPTY_MESH);
+  BOOST_CHECK(uvs.empty() && charts.empty());
+  Soup s = mbp_test::grid(2);
+  s.points[4][2] = std::numeric_limits<double>::quiet_NaN();
+  BOOST_CHECK_EQUAL(SMP::compute_atlas_of_polygon_soup(s.points, s.faces, uvs, charts),
+                    SMP::ERROR_NON_FINITE_COORDINATES);
+  BOOST_CHECK(uvs.empty() && charts.empty());
+  SMP::Atlas_options bad;
+  bad.gutter = bad.resolution;
+  const Soup t = mbp_test::grid(2);
+  BOOST_CHECK_EQUAL(SMP::compute_atlas_of_polygon_soup(t.points, t.faces, uvs, charts, bad), SMP::ERROR_WRONG_PARAMETER);
+}
+
+// The face graph form writes the same UVs and charts as the soup form, on a Surface_mesh and
+// on a Polyhedron_3 (quads: polygon meshes are accepted).
+template <class Mesh>
+void check_face_graph_form(const Soup& s)
+{
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(s.points, s.faces, mesh);
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+  auto uv = get(CGAL::dynamic_halfedge_property_t<Point_2>(), mesh);
+  auto chart = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  SMP::Atlas_report report;
+  BOOST_REQUIRE_EQUAL(SMP::compute_atlas(mesh, uv, chart, SMP::Atlas_options(), &report), SMP::OK);
+  const Atlas_output a = atlas_of(s.points, s.faces);
+  std::size_t p = 0, differences = 0;
+  for(face_descriptor f : faces(mesh))
+  {
+    std::size_t j = 0;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
+      differences += get(uv, h) == a.uvs[p][j++] ? 0 : 1;
+    differences += get(chart, f) == a.charts[p] ? 0 : 1;
+    ++p;
+  }
+  BOOST_CHECK_EQUAL(differences, 0u);
+  BOOST_CHECK_EQUAL(report.charts.size(), a.report.charts.size());
+}
+
+BOOST_AUTO_TEST_CASE(face_graph_form)
+{
+  check_face_graph_form<CGAL::Surface_mesh<Point_3> >(mbp_test::quads_and_a_pentagon_soup());
+  check_face_graph_form<CGAL::Polyhedron_3<K> >(mbp_test::quads_and_a_pentagon_soup());
+}
+
+// ----------------------------------------------------------- core tier: CGAL's data meshes
+
+namespace {
+
+// A mesh file read as a soup, its atlas checked (without the quadratic test inside charts on
+// big meshes: the charts' own validity is the parameterizers' and is tested there).
+Atlas_output check_file(const std::string& file, std::size_t& polygons_out)
+{
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  BOOST_REQUIRE_MESSAGE(CGAL::IO::read_polygon_soup(file, points, polygons) && !polygons.empty(), file);
+  const SMP::Atlas_options options;
+  const Atlas_output a = atlas_of(points, polygons, options);
+  check_corners(polygons, a, double(options.gutter) / options.resolution);
+  std::vector<std::vector<Eigen::Vector2d> > uv;
+  std::vector<std::vector<std::array<int, 3> > > triangles;
+  chart_triangles(a, uv, triangles);
+  const mbp_atlas_check::Atlas_check check =
+      mbp_atlas_check::check_atlas(uv, triangles, double(options.gutter) / options.resolution);
+  BOOST_CHECK_MESSAGE(check.overlapping_pairs == 0 && check.close_pairs == 0,
+                      file << ": " << check.overlapping_pairs << " overlapping pairs, " << check.close_pairs
+                           << " pairs closer than the gutter");
+  polygons_out = polygons.size();
+  return a;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(cgal_data_meshes)
+{
+  for(const char* name : {"blobby_3cc.off", "cube_quad.off", "blobby-shuffled.off", "cross_quad.off"})
+  {
+    std::size_t polygons = 0;
+    const Atlas_output a = check_file(mbp_test::core_mesh(name), polygons);
+    BOOST_TEST_MESSAGE(name << ": " << polygons << " polygons, " << a.report.charts.size() << " charts, utilization "
+                            << a.report.utilization << ", " << a.report.total_seconds << " s");
+  }
+}
+
+// ------------------------------------------------------ extended tier: ../shared/data/atlas
+
+BOOST_AUTO_TEST_CASE(atlas_meshes, MBP_EXTENDED_TIER)
+{
+  const std::string dir = mbp_test::shared_mesh_dir() + "/../atlas";
+  for(const char* name : {"1002_tray_bottom.STL", "Gravgen.obj", "Spider_binary.stl", "b9_mesh.off",
+                          "blobby-shuffled.off", "capsule.obj", "cycloidal.ply", "gazebo.obj", "lion_vase_poly.off",
+                          "lionstatue.obj", "moebius.obj", "pig.stl", "pizza.obj", "plane_holes.obj",
+                          "sword-quad-dominant.obj"})
+  {
+    std::size_t polygons = 0;
+    const Atlas_output a = check_file(dir + "/" + name, polygons);
+    BOOST_TEST_MESSAGE(name << ": " << polygons << " polygons, " << a.report.charts.size() << " charts, utilization "
+                            << a.report.utilization << ", " << a.report.total_seconds << " s");
+  }
+}
+
+BOOST_AUTO_TEST_SUITE_END()
