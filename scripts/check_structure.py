@@ -9,7 +9,8 @@
 # Author(s)     : The measured boundary parameterization authors
 #
 # The structural rules of the package (issue 21), checked on include/:
-#  1. internal/ is in layers that call only downward: core <- distances, borders; core <- seams.
+#  1. internal/ is in layers that call only downward: core <- distances, borders; core <- seams;
+#     core <- atlas.
 #     A layer includes headers of its own layer, of the layers below it, and leaf public
 #     headers (public headers that include no internal header) only.
 #  2. No documented public declaration, typedef or public base class names `internal::`:
@@ -24,7 +25,7 @@ root = args[0] if args else os.path.join(os.path.dirname(__file__), '..', 'inclu
 max_lines = int(sys.argv[sys.argv.index('--max-lines') + 1]) if '--max-lines' in sys.argv else 60
 package = os.path.join(root, 'CGAL', 'Surface_mesh_parameterization')
 LAYERS = {'core': {'core'}, 'distances': {'core', 'distances'}, 'borders': {'core', 'borders'},
-          'seams': {'core', 'seams'}}
+          'seams': {'core', 'seams'}, 'atlas': {'core', 'atlas'}}
 INCLUDE = re.compile(r'#include\s*<CGAL/Surface_mesh_parameterization/([^>]+)>')
 problems = []
 
