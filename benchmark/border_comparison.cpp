@@ -20,6 +20,11 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Eigen_sparse_matrix.h>
+#include <CGAL/property_map.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -28,6 +33,8 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
 #include <Eigen/SparseLU>
@@ -115,8 +122,18 @@ int main(int argc, char** argv)
       skipped.push_back(path.filename().string() + " (" + why + ")");
       continue;
     }
-    Measured measured;
-    const Run m = run_dcp(mesh, measured);
+    const Run m = run_dcp(mesh, Measured());
+    // whether the measured polygon is convex: the report of the border parameterizer called
+    // alone (the copy inside the DCP cannot be asked)
+    SMP::Parameterization_report report;
+    {
+      auto uv = mesh.add_property_map<vertex_descriptor, K::Point_2>("v:bench_border_uv").first;
+      auto done = mesh.add_property_map<vertex_descriptor, bool>("v:bench_border_done", false).first;
+      Measured().parameterize(mesh, CGAL::Polygon_mesh_processing::longest_border(mesh).first, uv,
+                              CGAL::Identity_property_map<vertex_descriptor>(), done, &report);
+      mesh.remove_property_map(uv);
+      mesh.remove_property_map(done);
+    }
     const Run c = run_dcp(mesh, Circle());
     const std::size_t border = CGAL::Polygon_mesh_processing::longest_border(mesh).second > 0
                                  ? halfedges_around_face(CGAL::Polygon_mesh_processing::longest_border(mesh).first, mesh).size()
@@ -133,7 +150,7 @@ int main(int argc, char** argv)
                 c.quality.angle_distortion, m.quality.angle_distortion,
                 m.quality.angle_distortion / c.quality.angle_distortion,
                 c.quality.l2_stretch, m.quality.l2_stretch, c.quality.flipped_faces, m.quality.flipped_faces,
-                measured.is_border_convex() ? "yes" : "no");
+                report.border_convex ? "yes" : "no");
     std::fflush(stdout);
   }
   for(const std::string& s : skipped)

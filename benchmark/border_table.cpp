@@ -28,15 +28,15 @@
 // Methods (each run builds a new parameterizer; its parameterize(mesh, bhd, uv, vimap, vpmap)
 // call is timed, the maps are prepared outside the timing, so SMP::parameterize()'s wrapper is
 // not counted):
-//   conformal    Measured_conformal_parameterizer_3<Mesh> with CONFORMAL_BORDER (Eigen LDLT)
-//   auto         Measured_conformal_parameterizer_3<Mesh, Poisson_center_locator<Mesh>,
-//                Geodesic_border_distance<Mesh, Fast_marching_geodesics>> with
-//                AUTOMATIC_BORDER: the command line's default (one factorization)
-//   auto P       Measured_conformal_parameterizer_3<Mesh> (the paper's default policies:
-//                Poisson distances) with AUTOMATIC_BORDER (two factorizations)
-//   MBPPP        Measured_conformal_parameterizer_3<Mesh>, MEASURED_BORDER (default repair)
-//   MBPGP        the fast marching geodesic distance, MEASURED_BORDER (default repair)
-//   circle       Measured_conformal_parameterizer_3<Mesh>, CIRCULAR_BORDER
+//   conformal    Conformal_parameterizer_3<Mesh, Conformal_border> (Eigen LDLT)
+//   auto         Conformal_parameterizer_3<Mesh, Automatic_border<Poisson_center_locator,
+//                Geodesic_border_distance<Fast_marching_geodesics>>>: the command line's
+//                default (one factorization)
+//   auto P       Conformal_parameterizer_3<Mesh> (Automatic_border<>: the paper's default
+//                policies, Poisson distances, for its measured member; two factorizations)
+//   MBPPP        Measured_conformal_parameterizer_3<Mesh> (default repair)
+//   MBPGP        the same with the fast marching geodesic distance (default repair)
+//   circle       Conformal_parameterizer_3<Mesh, Circular_border>
 //   LSCM         CGAL's LSCM_parameterizer_3<Mesh>, defaults (free border, two fixed
 //                vertices: the algorithm of libigl's LSCM)
 //   BFF          bff-command-line IN.obj OUT.obj (no option: the conformal map with boundary
@@ -45,9 +45,10 @@
 //                is timed (start, reading, solving, writing the OBJ, exit). Its output's
 //                (v, vt) corners give a mesh with the input's 3D points and the output's UVs,
 //                measured like ours. The output has 6 decimals per UV.
-//   floor        Parameterization_patch_3<Mesh>::factorize_interior_laplacian() after
-//                build_disk(): statistics().factorization_seconds (analyze + factorize of
-//                L_II, Eigen LDLT); "floor+asm" also counts the assembly of L_II.
+//   floor        SolverTraits::factor() of L_II (analyze + factorize, Eigen LDLT), L_II
+//                assembled as the package assembles it (benchmark_support.h); "floor+asm"
+//                also counts that assembly (this benchmark's, with Eigen triplets: the
+//                package's own is internal and not timed separately any more).
 //   with CHOLMOD (MBP_WITH_CHOLMOD): conformal and auto with
 //                Cholmod_supernodal_cholesky_traits, and their floor.
 //   CGAL DCP     (cross-check meshes only) CGAL's Discrete_conformal_map_parameterizer_3<Mesh>
@@ -65,18 +66,28 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 
+#include <CGAL/Surface_mesh_parameterization/Automatic_border.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_border.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
-#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
+#include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 #ifdef MBP_WITH_CHOLMOD
 #include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
 #endif
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
 
 #include <fcntl.h>
 #include <sys/wait.h>
@@ -118,13 +129,20 @@ typedef Mesh::Property_map<vertex_descriptor, K::Point_2>       UV_map;
 typedef Mesh::Property_map<vertex_descriptor, bool>             Parameterized_map;
 typedef std::chrono::steady_clock                               Clock;
 
-typedef SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics> Fast_marching_distance;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh>                     Ours_poisson;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
-                                                Fast_marching_distance>    Ours_geodesic;
+typedef SMP::Geodesic_border_distance<SMP::Fast_marching_geodesics>       Fast_marching_distance;
+typedef SMP::Automatic_border<SMP::Poisson_center_locator, Fast_marching_distance> Automatic;
+typedef SMP::Default_sparse_cholesky_traits                               Ldlt_traits;
+typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Conformal_border>       Ours_conformal;
+typedef SMP::Conformal_parameterizer_3<Mesh, Automatic>                   Ours_auto;
+typedef SMP::Conformal_parameterizer_3<Mesh>                              Ours_auto_poisson;  // Automatic_border<>
+typedef SMP::Measured_conformal_parameterizer_3<Mesh>                     Ours_mbppp;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator,
+                                                Fast_marching_distance>    Ours_mbpgp;
+typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Circular_border>        Ours_circle;
 #ifdef MBP_WITH_CHOLMOD
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>, Fast_marching_distance,
-                                                SMP::Cholmod_supernodal_cholesky_traits> Ours_geodesic_cholmod;
+typedef SMP::Cholmod_supernodal_cholesky_traits                           Cholmod_traits;
+typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Conformal_border, Cholmod_traits> Ours_conformal_cholmod;
+typedef SMP::Conformal_parameterizer_3<Mesh, Automatic, Cholmod_traits>   Ours_auto_cholmod;
 #endif
 typedef SMP::LSCM_parameterizer_3<Mesh>                                   Cgal_lscm;
 typedef SMP::Discrete_conformal_map_parameterizer_3<Mesh>                 Cgal_dcp;
@@ -200,16 +218,15 @@ double since(Clock::time_point start)
 }
 
 template <class Ours>
-Sample run_ours(Mesh& mesh, halfedge_descriptor bhd, Maps& maps, typename Ours::Border_choice choice)
+Sample run_ours(Mesh& mesh, halfedge_descriptor bhd, Maps& maps)
 {
   reset(mesh, maps);
-  Ours ours;
-  ours.set_border_choice(choice);
+  const Ours ours;
+  SMP::Parameterization_report r;
   Sample s;
   const Clock::time_point start = Clock::now();
-  s.status = ours.parameterize(mesh, bhd, maps.uv, get(CGAL::vertex_index, mesh), maps.vp);
+  s.status = ours.parameterize(mesh, bhd, maps.uv, get(CGAL::vertex_index, mesh), maps.vp, &r);
   s.seconds = since(start);
-  const typename Ours::Report& r = ours.last_report();
   Ours_info& i = s.info;
   i.factorizations = r.statistics.factorizations;
   i.back_substitutions = r.statistics.back_substitutions;
@@ -245,20 +262,26 @@ Sample run_cgal(Mesh& mesh, halfedge_descriptor bhd, Maps& maps)
   return s;
 }
 
-// One analyze + factorize of L_II by the package's patch (build_disk() outside the timing).
-template <class Patch>
+// One analyze + factorize of L_II by the solver traits, as the package factorizes it
+// (SolverTraits::factor()); "with assembly" also counts this benchmark's assembly of L_II
+// (benchmark_support.h: Eigen triplets, not the package's own assembly, which is internal).
+template <class Traits>
 Sample run_floor(const Mesh& mesh, halfedge_descriptor bhd)
 {
   Sample s;
-  Patch patch;
-  s.status = patch.build_disk(mesh, bhd, get(CGAL::vertex_point, mesh));
-  if(s.status != SMP::OK)
-    return s;
   const Clock::time_point start = Clock::now();
-  s.status = patch.factorize_interior_laplacian();
+  Eigen::SparseMatrix<double> A;
+  if(!mbp_benchmark::interior_cotangent_laplacian(mesh, bhd, A))
+    return s;
+  const typename Traits::Matrix M(A);
+  Traits traits;
+  double D = 1.;
+  const Clock::time_point factor_start = Clock::now();
+  const bool factorized = traits.factor(M, D);
+  s.seconds = since(factor_start);
   s.seconds_with_assembly = since(start);
-  s.seconds = patch.statistics().factorization_seconds;
-  s.info.factorizations = patch.statistics().factorizations;
+  s.status = factorized ? SMP::OK : SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  s.info.factorizations = 1;
   return s;
 }
 
@@ -533,22 +556,19 @@ Sample run_method(int m, Mesh& mesh, halfedge_descriptor bhd, Maps& maps, const 
 {
   switch(m)
   {
-  case CONFORMAL:    return run_ours<Ours_poisson>(mesh, bhd, maps, Ours_poisson::CONFORMAL_BORDER);
-  case AUTO:         return run_ours<Ours_geodesic>(mesh, bhd, maps, Ours_geodesic::AUTOMATIC_BORDER);
-  case AUTO_POISSON: return run_ours<Ours_poisson>(mesh, bhd, maps, Ours_poisson::AUTOMATIC_BORDER);
-  case MBPPP:        return run_ours<Ours_poisson>(mesh, bhd, maps, Ours_poisson::MEASURED_BORDER);
-  case MBPGP:        return run_ours<Ours_geodesic>(mesh, bhd, maps, Ours_geodesic::MEASURED_BORDER);
-  case CIRCLE:       return run_ours<Ours_poisson>(mesh, bhd, maps, Ours_poisson::CIRCULAR_BORDER);
+  case CONFORMAL:    return run_ours<Ours_conformal>(mesh, bhd, maps);
+  case AUTO:         return run_ours<Ours_auto>(mesh, bhd, maps);
+  case AUTO_POISSON: return run_ours<Ours_auto_poisson>(mesh, bhd, maps);
+  case MBPPP:        return run_ours<Ours_mbppp>(mesh, bhd, maps);
+  case MBPGP:        return run_ours<Ours_mbpgp>(mesh, bhd, maps);
+  case CIRCLE:       return run_ours<Ours_circle>(mesh, bhd, maps);
   case LSCM:         return run_cgal<Cgal_lscm>(mesh, bhd, maps);
   case BFF:          return run_bff(options.bff, obj_in, obj_out, log);
-  case FLOOR:        return run_floor<Ours_poisson::Patch>(mesh, bhd);
+  case FLOOR:        return run_floor<Ldlt_traits>(mesh, bhd);
 #ifdef MBP_WITH_CHOLMOD
-  case CONFORMAL_CHOLMOD:
-    return run_ours<Ours_geodesic_cholmod>(mesh, bhd, maps, Ours_geodesic_cholmod::CONFORMAL_BORDER);
-  case AUTO_CHOLMOD:
-    return run_ours<Ours_geodesic_cholmod>(mesh, bhd, maps, Ours_geodesic_cholmod::AUTOMATIC_BORDER);
-  case FLOOR_CHOLMOD:
-    return run_floor<Ours_geodesic_cholmod::Patch>(mesh, bhd);
+  case CONFORMAL_CHOLMOD: return run_ours<Ours_conformal_cholmod>(mesh, bhd, maps);
+  case AUTO_CHOLMOD:      return run_ours<Ours_auto_cholmod>(mesh, bhd, maps);
+  case FLOOR_CHOLMOD:     return run_floor<Cholmod_traits>(mesh, bhd);
 #endif
   case CGAL_DCP:     return run_cgal<Cgal_dcp>(mesh, bhd, maps);
   default: break;
@@ -946,7 +966,7 @@ void print_failures(const std::vector<Row>& rows)
           std::printf("Failures:\n\n");
         any = true;
         std::printf("- %s, %s: %s\n", row.name.c_str(), method_name(m),
-                    r.message.empty() ? SMP::get_error_message(r.status) : r.message.c_str());
+                    r.message.empty() ? SMP::get_measured_error_message(r.status) : r.message.c_str());
       }
     }
   if(any)

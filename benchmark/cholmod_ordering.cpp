@@ -25,10 +25,11 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
-#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
 
 #include "benchmark_support.h"
 
+#include <Eigen/Core>
+#include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
@@ -37,6 +38,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #ifndef MBP_MESH_DIR
@@ -145,19 +147,13 @@ int main(int argc, char** argv)
       mbp_benchmark::midpoint_subdivision(mesh, refined);
       mesh = std::move(refined);
     }
-    SMP::Parameterization_patch_3<Mesh> patch;
-    if(patch.build_disk(mesh, CGAL::Polygon_mesh_processing::longest_border(mesh).first,
-                        get(CGAL::vertex_point, mesh)) != SMP::OK)
+    // L_II as the package assembles it (benchmark_support.h)
+    Eigen::SparseMatrix<double> A;
+    if(!mbp_benchmark::interior_cotangent_laplacian(mesh, CGAL::Polygon_mesh_processing::longest_border(mesh).first, A))
     {
       std::fprintf(stderr, "%s: not a disk\n", file.c_str());
       return EXIT_FAILURE;
     }
-    std::vector<int> unknown(patch.number_of_vertices());
-    for(std::size_t i = 0; i < unknown.size(); ++i)
-      unknown[i] = patch.interior_index(i);
-    Eigen::SparseMatrix<double> A;
-    patch.pattern().assemble(patch.faces_indices(), unknown, static_cast<int>(patch.interior_vertices().size()),
-                             SMP::internal::Cotangent_weight{&patch.half_cotangents()}, A);
     const std::string name = file.substr(file.find_last_of('/') + 1) + (levels ? " x" + std::to_string(levels) : "");
     auto row = [&](const char* solver, const Timing& t) {
       std::printf("| %s | %zu | %ld | %s | %.3f | %.3f | %.2f | %.4f | %.1f |\n", name.c_str(),

@@ -26,7 +26,7 @@
 //   --dcp-cap S     scale mode: CGAL's DCP runs once, in a child process killed after S
 //                   seconds (default 600; 0: no DCP)
 //   --cli PATH      scale mode, whole process: the command-line program (default, as
-//                   configured: the build's examples/measured_parameterization); none: skip
+//                   configured: the build's cli/measured_parameterization); none: skip
 //   --bff PATH      scale mode, whole process: Boundary First Flattening's command line
 //                   (default, as configured: ../shared/peers/bff-command-line); none: skip
 //   --whole-runs N  scale mode: whole-process runs of each program (default 3, interleaved)
@@ -35,16 +35,16 @@
 //
 // Methods (all through SMP::parameterize(mesh, parameterizer, longest border, uv map)):
 //   auto LDLT      the library's default path with the automatic border, as the command
-//                  line runs it: Measured_conformal_parameterizer_3<Mesh,
-//                  Poisson_center_locator<Mesh>, Geodesic_border_distance<Mesh,
-//                  Fast_marching_geodesics>, Solver> with set_border_choice(AUTOMATIC_BORDER),
-//                  Sequential_tag, default repair; Solver = Default_sparse_cholesky_traits
-//                  (Eigen's SimplicialLDLT)
+//                  line runs it: Conformal_parameterizer_3<Mesh, Automatic_border<
+//                  Poisson_center_locator, Geodesic_border_distance<Fast_marching_geodesics> >,
+//                  Solver>, Sequential_tag, default repair; Solver =
+//                  Default_sparse_cholesky_traits (Eigen's SimplicialLDLT)
 //   auto CHOLMOD   the same with Cholmod_supernodal_cholesky_traits (AMD), when built with
 //                  CHOLMOD (MBP_WITH_CHOLMOD)
 //   MBPPP LDLT,    the paper's method: Measured_conformal_parameterizer_3 with its default
-//   MBPPP CHOLMOD  policies (Poisson center, Poisson distances) and MEASURED_BORDER (two
-//                  factorizations: L_II and the spring Laplacian); the scale mode runs the
+//   MBPPP CHOLMOD  policies (Poisson center, Poisson distances), i.e. the border policy
+//                  Measured_border<> (two factorizations: L_II and the spring Laplacian); the
+//                  scale mode runs the
 //                  CHOLMOD one only
 //   DCP            CGAL's Discrete_conformal_map_parameterizer_3, defaults (circular
 //                  arc-length border, BiCGSTAB + IncompleteLUT); in the scale mode once, in a
@@ -52,7 +52,7 @@
 //   LSCM, MVC      CGAL's LSCM_parameterizer_3 and Mean_value_coordinates_parameterizer_3,
 //                  defaults (not in the scale mode)
 //
-// Time: wall-clock seconds of the SMP::parameterize() call (reading the mesh, the quality
+// Time: wall-clock seconds of the SMP::parameterize() call (ours with its report; reading the mesh, the quality
 // measure and printing are outside), median of N runs. The runs are interleaved (run 1 of
 // every method and of the floors, then run 2, ...) so that load from other processes spreads
 // over all of them. Each row prints the 1-minute load average (/proc/loadavg) at its start and
@@ -62,10 +62,11 @@
 // Floor: one factorization of the interior cotangent Laplacian L_II (border eliminated) by
 // the solver traits of the method: SolverTraits::factor(), i.e. Eigen's SimplicialLDLT
 // compute() (analyzePattern + factorize), or Cholmod_supernodal_cholesky_traits (AMD:
-// cholmod_analyze + cholmod_factorize). L_II is assembled once, outside the timing, exactly as
-// the package's Dirichlet engine assembles it (Parameterization_patch_3's Laplacian pattern,
-// cotangent weights, rows in vertex order). Any method that solves the discrete conformal
-// map costs at least this. "ratio" = method time / floor time of its solver (medians).
+// cholmod_analyze + cholmod_factorize). L_II is assembled once, outside the timing, with
+// Eigen from the mesh, as the package assembles it (benchmark_support.h: cotangent weights,
+// the package's vertex numbering, holes filled the same way). Any method that solves the
+// discrete conformal map costs at least this. "ratio" = method time / floor time of its
+// solver (medians).
 //
 // Peak memory (in-process): each method runs once more in a child process (this program,
 // fork()ed and exec()ed with the hidden option --child), which reads the mesh, runs the
@@ -102,12 +103,15 @@
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
+#include <CGAL/Surface_mesh_parameterization/Automatic_border.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
-#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/Parameterization_patch_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
-#include <CGAL/Surface_mesh_parameterization/internal/laplacian.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 #ifdef MBP_WITH_CHOLMOD
 #include <CGAL/Surface_mesh_parameterization/Cholmod_supernodal_cholesky_traits.h>
@@ -158,16 +162,16 @@ typedef boost::graph_traits<Mesh>::halfedge_descriptor          halfedge_descrip
 typedef Mesh::Property_map<vertex_descriptor, K::Point_2>       UV_map;
 typedef std::chrono::steady_clock                               Clock;
 
-typedef SMP::Poisson_center_locator<Mesh>                                     Poisson_center;
-typedef SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics>     Fast_marching_distance;
+typedef SMP::Geodesic_border_distance<SMP::Fast_marching_geodesics>          Fast_marching_distance;
+typedef SMP::Automatic_border<SMP::Poisson_center_locator, Fast_marching_distance> Automatic;
 typedef SMP::Default_sparse_cholesky_traits                                   Ldlt_traits;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, Poisson_center, Fast_marching_distance> Auto_ldlt;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh>                                          Mbppp_ldlt;
+typedef SMP::Conformal_parameterizer_3<Mesh, Automatic, Ldlt_traits>          Auto_ldlt;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh>                         Mbppp_ldlt;
 #ifdef MBP_WITH_CHOLMOD
-typedef SMP::Cholmod_supernodal_cholesky_traits                                                Cholmod_traits;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, Poisson_center, Fast_marching_distance,
-                                                Cholmod_traits>                                Auto_cholmod;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, CGAL::Default, CGAL::Default, Cholmod_traits> Mbppp_cholmod;
+typedef SMP::Cholmod_supernodal_cholesky_traits                               Cholmod_traits;
+typedef SMP::Conformal_parameterizer_3<Mesh, Automatic, Cholmod_traits>       Auto_cholmod;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator, SMP::Poisson_border_distance,
+                                                Cholmod_traits>               Mbppp_cholmod;
 #endif
 typedef SMP::Discrete_conformal_map_parameterizer_3<Mesh>       Cgal_dcp;
 typedef SMP::LSCM_parameterizer_3<Mesh>                         Cgal_lscm;
@@ -256,12 +260,14 @@ Run time_parameterize(Mesh& mesh, Parameterizer& parameterizer, halfedge_descrip
 }
 
 template <class Ours>
-Run time_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv, typename Ours::Border_choice choice)
+Run time_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv)
 {
-  Ours ours;
-  ours.set_border_choice(choice);
-  Run r = time_parameterize(mesh, ours, bhd, uv);  // copies share the report
-  const typename Ours::Report& report = ours.last_report();
+  const Ours ours;
+  SMP::Parameterization_report report;
+  Run r;
+  const Clock::time_point start = Clock::now();
+  r.status = SMP::parameterize(mesh, ours, bhd, uv, &report);
+  r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   r.is_ours = true;
   r.stages.preparation = report.preparation_seconds;
   r.stages.conformal_border = report.conformal_border_seconds;
@@ -287,11 +293,11 @@ Run run_method(int m, Mesh& mesh, halfedge_descriptor bhd, UV_map uv)
 {
   switch(m)
   {
-  case AUTO_LDLT:     return time_ours<Auto_ldlt>(mesh, bhd, uv, Auto_ldlt::AUTOMATIC_BORDER);
-  case MBPPP_LDLT:    return time_ours<Mbppp_ldlt>(mesh, bhd, uv, Mbppp_ldlt::MEASURED_BORDER);
+  case AUTO_LDLT:     return time_ours<Auto_ldlt>(mesh, bhd, uv);
+  case MBPPP_LDLT:    return time_ours<Mbppp_ldlt>(mesh, bhd, uv);
 #ifdef MBP_WITH_CHOLMOD
-  case AUTO_CHOLMOD:  return time_ours<Auto_cholmod>(mesh, bhd, uv, Auto_cholmod::AUTOMATIC_BORDER);
-  case MBPPP_CHOLMOD: return time_ours<Mbppp_cholmod>(mesh, bhd, uv, Mbppp_cholmod::MEASURED_BORDER);
+  case AUTO_CHOLMOD:  return time_ours<Auto_cholmod>(mesh, bhd, uv);
+  case MBPPP_CHOLMOD: return time_ours<Mbppp_cholmod>(mesh, bhd, uv);
 #endif
   case CGAL_DCP:  { Cgal_dcp p;  return time_parameterize(mesh, p, bhd, uv); }
   case CGAL_LSCM: { Cgal_lscm p; return time_parameterize(mesh, p, bhd, uv); }
@@ -305,21 +311,6 @@ Run run_method(int m, Mesh& mesh, halfedge_descriptor bhd, UV_map uv)
 
 // ---------------------------------------------------------------------------------------
 // Floor: one factorization of L_II by the solver traits
-
-// The interior cotangent Laplacian, as the Dirichlet engine assembles it (free rows in
-// vertex order, border eliminated).
-bool interior_cotangent_laplacian(const Mesh& mesh, halfedge_descriptor bhd, Eigen::SparseMatrix<double>& A)
-{
-  SMP::Parameterization_patch_3<Mesh> patch;
-  if(patch.build_disk(mesh, bhd, get(CGAL::vertex_point, mesh)) != SMP::OK)
-    return false;
-  std::vector<int> unknown(patch.number_of_vertices());
-  for(std::size_t i = 0; i < unknown.size(); ++i)
-    unknown[i] = patch.interior_index(i);
-  patch.pattern().assemble(patch.faces_indices(), unknown, static_cast<int>(patch.interior_vertices().size()),
-                           SMP::internal::Cotangent_weight{&patch.half_cotangents()}, A);
-  return true;
-}
 
 template <class Traits>
 double time_traits_factor(const Eigen::SparseMatrix<double>& A)
@@ -898,7 +889,7 @@ Mesh_result measure_mesh(const std::string& name, Mesh& mesh, const Mesh_source&
   run_children(plan, source, name, res);
 
   Eigen::SparseMatrix<double> A;
-  const bool have_laplacian = interior_cotangent_laplacian(mesh, bhd, A);
+  const bool have_laplacian = mbp_benchmark::interior_cotangent_laplacian(mesh, bhd, A);
   bool needs_floor[NUMBER_OF_SOLVERS] = {false, false};
   for(int m : plan.timed)
     if(solver_of(m) >= 0)
@@ -1006,9 +997,9 @@ const char* family_name(int kept)
 {
   switch(kept)
   {
-  case Auto_ldlt::CIRCLE: return "circle";
-  case Auto_ldlt::MEASURED: return "measured";
-  case Auto_ldlt::CONFORMAL: return "conformal";
+  case SMP::CIRCLE: return "circle";
+  case SMP::MEASURED: return "measured";
+  case SMP::CONFORMAL: return "conformal";
   default: return "-";
   }
 }

@@ -21,7 +21,7 @@
 //   --auto                 the automatic border table (issue 6) instead of Tables 1 and 2
 //
 // Tables 1 and 2 (default mode). Every measured method is this package's
-// Measured_conformal_parameterizer_3 (Eigen LDLT, concurrent) with set_repair(NO_REPAIR), so
+// Measured_conformal_parameterizer_3 (Eigen LDLT) constructed with the repair NO_REPAIR, so
 // that the paper's method itself is measured. When its result is not one-to-one (status
 // ERROR_NO_1_TO_1_MAPPING) nothing is written; the distortion of that unrepaired map is then
 // measured on CGAL's Discrete_conformal_map_parameterizer_3 with the same
@@ -29,14 +29,14 @@
 // same map (the package's tests check 1e-14), and the cell shows its flipped faces.
 //   DCP             CGAL's DCP with Circular_border_arc_length_parameterizer_3, SparseLU
 //   MBPPP           Poisson_center_locator + Poisson_border_distance (the package's default)
-//   MBPGP <solver>  Poisson_center_locator + Geodesic_border_distance<Mesh, solver>, solver =
+//   MBPGP <solver>  Poisson_center_locator + Geodesic_border_distance<solver>, solver =
 //                   Fast_marching_geodesics (the paper's), Dijkstra_geodesics,
 //                   Heat_method_geodesics<Direct>, Exact_geodesics
 //   MBPSGP          Poisson_center_locator + Straightest_geodesic_border_distance ("-" when a
 //                   border vertex is not reached; the failure is listed)
-//   Table 2         {BPDM = Poisson_center_locator, BGDM = Geodesic_center_locator<Mesh,
+//   Table 2         {BPDM = Poisson_center_locator, BGDM = Geodesic_center_locator<
 //                   Fast_marching_geodesics>} x {PDM = Poisson_border_distance, GDM =
-//                   Geodesic_border_distance<Mesh, Fast_marching_geodesics>}
+//                   Geodesic_border_distance<Fast_marching_geodesics>}
 //   repair          MBPPP and MBPGP (fast marching) once more with the default repair
 //                   (BLEND_TOWARD_CIRCLE): for every mesh where it was needed, the distortion
 //                   before and after, the blend, the interior kept, the time of the check and
@@ -49,8 +49,8 @@
 //
 // --auto (issue 6). Angle distortion of: circle (CGAL DCP with the arc-length circle,
 // SparseLU), Poisson border (MBPPP, unrepaired), geodesic border (MBPGP fast marching,
-// unrepaired), auto (Measured_conformal_parameterizer_3 with the default policies and
-// set_border_choice(AUTOMATIC_BORDER)), CGAL's LSCM (free border, defaults); auto / circle;
+// unrepaired), auto (Conformal_parameterizer_3 with the border policy Automatic_border<>,
+// the default), CGAL's LSCM (free border, defaults); auto / circle;
 // also auto with the geodesic policy (Geodesic_border_distance with fast marching; its second
 // border is then the Poisson one);
 // the time of auto against the plain geodesic method (MBPGP fast marching, NO_REPAIR: its
@@ -61,17 +61,25 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Eigen_sparse_matrix.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
+#include <CGAL/Surface_mesh_parameterization/Automatic_border.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_center_locator.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_border.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/Straightest_geodesic_border_distance.h>
@@ -93,7 +101,6 @@
 #include <iostream>
 #include <limits>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -105,14 +112,14 @@ typedef Mesh::Property_map<vertex_descriptor, K::Point_2>       UV_map;
 typedef std::chrono::steady_clock                               Clock;
 typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > LU;
 
-typedef SMP::Poisson_center_locator<Mesh>                                       BPDM;
-typedef SMP::Geodesic_center_locator<Mesh, SMP::Fast_marching_geodesics>        BGDM;
-typedef SMP::Poisson_border_distance<Mesh>                                      PDM;
-typedef SMP::Geodesic_border_distance<Mesh, SMP::Fast_marching_geodesics>       GDM_fm;
-typedef SMP::Geodesic_border_distance<Mesh, SMP::Dijkstra_geodesics>            GDM_dijkstra;
-typedef SMP::Geodesic_border_distance<Mesh, SMP::Heat_method_geodesics<> >      GDM_heat;
-typedef SMP::Geodesic_border_distance<Mesh, SMP::Exact_geodesics>               GDM_exact;
-typedef SMP::Straightest_geodesic_border_distance<Mesh>                         SGDM;
+typedef SMP::Poisson_center_locator                                             BPDM;
+typedef SMP::Geodesic_center_locator<SMP::Fast_marching_geodesics>              BGDM;
+typedef SMP::Poisson_border_distance                                            PDM;
+typedef SMP::Geodesic_border_distance<SMP::Fast_marching_geodesics>             GDM_fm;
+typedef SMP::Geodesic_border_distance<SMP::Dijkstra_geodesics>                  GDM_dijkstra;
+typedef SMP::Geodesic_border_distance<SMP::Heat_method_geodesics<> >            GDM_heat;
+typedef SMP::Geodesic_border_distance<SMP::Exact_geodesics>                     GDM_exact;
+typedef SMP::Straightest_geodesic_border_distance                               SGDM;
 
 namespace {
 
@@ -136,20 +143,17 @@ struct Run
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-template <class Center, class Distance>
-Run run_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv, Mode mode)
+// Our parameterizer with the border policy `Border` and the repair `repair`.
+template <class Border>
+Run run_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv, SMP::Repair repair)
 {
-  typedef SMP::Measured_conformal_parameterizer_3<Mesh, Center, Distance> Parameterizer;
-  Parameterizer p;
-  if(mode == NO_REPAIR)
-    p.set_repair(Parameterizer::NO_REPAIR);
-  if(mode == AUTOMATIC)
-    p.set_border_choice(Parameterizer::AUTOMATIC_BORDER);
+  typedef SMP::Conformal_parameterizer_3<Mesh, Border> Parameterizer;
+  const Parameterizer p(Border(), typename Parameterizer::Solver_traits(), repair);
+  SMP::Parameterization_report report;
   Run r;
   const Clock::time_point start = Clock::now();
-  r.status = SMP::parameterize(mesh, p, bhd, uv);  // copies of p share its report
+  r.status = SMP::parameterize(mesh, p, bhd, uv, &report);
   r.seconds = since(start);
-  const typename Parameterizer::Report& report = p.last_report();
   r.is_ours = true;
   r.valid_before_repair = report.valid_before_repair;
   r.flips_before = report.flipped_faces_before_repair;
@@ -166,12 +170,13 @@ Run run_ours(Mesh& mesh, halfedge_descriptor bhd, UV_map uv, Mode mode)
     r.chosen_blend = report.border_candidates[static_cast<std::size_t>(r.chosen)].blend;
   }
   r.search_seconds = report.interior_seconds + report.conformal_border_seconds;
-  if constexpr(std::is_same<Distance, SGDM>::value)
+  if(report.unreachable_border_vertices > 0)  // the distances of the vertices not reached are 0
   {
-    const typename SGDM::Failure& f = p.border_parameterizer().border_distance().last_failure();
-    if(f.unreachable > 0)
-      r.failure = std::to_string(f.unreachable) + " of " + std::to_string(p.border_parameterizer().border_vertices().size()) +
-                  " border vertices not reached (first: border index " + std::to_string(f.border_index) + ")";
+    const std::size_t first = static_cast<std::size_t>(
+      std::find(report.border_distances.begin(), report.border_distances.end(), 0.) - report.border_distances.begin());
+    r.failure = std::to_string(report.unreachable_border_vertices) + " of " +
+                std::to_string(report.border_distances.size()) + " border vertices not reached (first: border index " +
+                std::to_string(first) + ")";
   }
   if(r.status != SMP::OK && r.failure.empty())
     r.failure = SMP::get_measured_error_message(r.status);
@@ -216,7 +221,12 @@ Method ours(const std::string& name, Mode mode, std::size_t max_vertices = 0)
 {
   Method m;
   m.name = name;
-  m.run = [mode](Mesh& mesh, halfedge_descriptor bhd, UV_map uv) { return run_ours<Center, Distance>(mesh, bhd, uv, mode); };
+  m.run = [mode](Mesh& mesh, halfedge_descriptor bhd, UV_map uv) {
+    if(mode == AUTOMATIC)
+      return run_ours<SMP::Automatic_border<Center, Distance> >(mesh, bhd, uv, SMP::BLEND_TOWARD_CIRCLE);
+    return run_ours<SMP::Measured_border<Center, Distance> >(mesh, bhd, uv,
+                                                            mode == NO_REPAIR ? SMP::NO_REPAIR : SMP::BLEND_TOWARD_CIRCLE);
+  };
   if(mode == NO_REPAIR)
     m.unrepaired = [](Mesh& mesh, halfedge_descriptor bhd, UV_map uv) { return unrepaired_map<Center, Distance>(mesh, bhd, uv); };
   m.max_vertices = max_vertices;

@@ -19,14 +19,19 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/property_map.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/IO/File_off.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <CGAL/Surface_mesh_parameterization/Measured_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -53,12 +58,10 @@ int main(int argc, char** argv)
   const halfedge_descriptor bhd = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
   auto uvmap = mesh.add_property_map<vertex_descriptor, Kernel::Point_2>("v:uv").first;
 
-  // The measured border inside CGAL's DCP. The border parameterizer passed to the DCP's
-  // constructor shares its record with the copy the DCP keeps, so the center and the
-  // measured distances of the call can be read from `border` afterwards.
+  // The measured border inside CGAL's DCP: a drop-in for CGAL's circular border
+  // parameterizers (the DCP keeps its own copy of the border parameterizer).
   typedef SMP::Measured_border_parameterizer_3<Mesh> Border;
-  Border border;
-  SMP::Discrete_conformal_map_parameterizer_3<Mesh, Border> dcp(border);
+  SMP::Discrete_conformal_map_parameterizer_3<Mesh, Border> dcp;
   const SMP::Error_code status = SMP::parameterize(mesh, dcp, bhd, uvmap);
   if(status != SMP::OK)
   {
@@ -75,9 +78,21 @@ int main(int argc, char** argv)
               << "Measured_conformal_parameterizer_3 repairs such layouts\n";
     return EXIT_FAILURE;
   }
-  std::cout << input << ": " << num_vertices(mesh) << " vertices, center " << border.center() << " at "
-            << mesh.point(border.center()) << ", border of " << border.border_vertices().size()
-            << " vertices (" << (border.is_border_convex() ? "convex" : "not convex") << ")\n";
+
+  // The border parameterizer can also run alone, with the report of its call (the center,
+  // the measured distances, the polygon). CGAL's DCP calls it without a report. The report
+  // names the center by its position in vertices(mesh): its index in a Surface_mesh without
+  // removed vertices. Poisson_border_distance measures in values of the paper's Eq. 1, not
+  // in lengths: only their ratios shape the border.
+  SMP::Parameterization_report report;
+  auto border_uv = mesh.add_property_map<vertex_descriptor, Kernel::Point_2>("v:border_uv").first;
+  auto border_done = mesh.add_property_map<vertex_descriptor, bool>("v:border_done", false).first;
+  Border().parameterize(mesh, bhd, border_uv, CGAL::Identity_property_map<vertex_descriptor>(), border_done, &report);
+  std::cout << input << ": " << num_vertices(mesh) << " vertices, center " << Mesh::Vertex_index(report.center)
+            << " at " << mesh.point(Mesh::Vertex_index(report.center)) << ", border of " << report.border_uv.size()
+            << " vertices (" << (report.border_convex ? "convex" : "not convex") << "), measured distances from "
+            << *std::min_element(report.border_distances.begin(), report.border_distances.end()) << " to "
+            << *std::max_element(report.border_distances.begin(), report.border_distances.end()) << "\n";
 
   std::ofstream out(output);
   SMP::IO::output_uvmap_to_off(mesh, bhd, uvmap, out);

@@ -20,17 +20,20 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/IO/File_off.h>
-#include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
+#include <cstddef>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <string>
 
 typedef CGAL::Simple_cartesian<double>                           Kernel;
@@ -60,21 +63,21 @@ int main(int argc, char** argv)
 
   // Default policies: the center is the maximum of the boundary Poisson distance map, the
   // border distances are the Poisson distance map from the center (the paper's MBPPP).
+  // The report of the call is an optional out-argument.
   SMP::Measured_conformal_parameterizer_3<Polyhedron> parameterizer;
-  const SMP::Error_code status = SMP::parameterize(mesh, parameterizer, bhd, uvmap);
+  SMP::Parameterization_report report;
+  const SMP::Error_code status = SMP::parameterize(mesh, parameterizer, bhd, uvmap, &report);
   if(status != SMP::OK)
   {
     std::cerr << "error: " << SMP::get_measured_error_message(status) << "\n";
     return EXIT_FAILURE;
   }
 
-  // The report of the call. SMP::parameterize() takes the parameterizer by value; copies
-  // share the report, so it is read from the original.
-  const auto& report = parameterizer.last_report();
-  const vertex_descriptor center = parameterizer.center();
+  // The report names the center by its position in vertices(mesh).
+  const vertex_descriptor center = *std::next(vertices(mesh).begin(), std::ptrdiff_t(report.center));
   std::cout << input << ": " << report.vertices << " vertices, " << report.faces << " faces\n"
             << "center: " << center->point() << "\n"
-            << "border: " << parameterizer.border_parameterizer().border_vertices().size() << " vertices\n"
+            << "border: " << report.border_uv.size() << " vertices\n"
             << "stages (s): preparation " << report.preparation_seconds
             << ", 1 center " << report.center_seconds
             << ", 2 distances " << report.distance_seconds
@@ -87,8 +90,8 @@ int main(int argc, char** argv)
             << report.statistics.factorization_seconds << " s), " << report.statistics.back_substitutions
             << " back-substitutions (" << report.statistics.back_substitution_seconds << " s)\n";
   if(report.repaired)
-    std::cout << "repair: " << report.flipped_faces_before_repair << " flipped faces; border blended toward a circle by "
-              << report.blend << ", " << (report.mean_value_interior ? "mean value" : "discrete conformal")
+    std::cout << "repair: " << report.flipped_faces_before_repair << " flipped faces; border blended toward a circle"
+              << " by " << report.blend << ", " << (report.mean_value_interior ? "mean value" : "discrete conformal")
               << " interior\n";
   else
     std::cout << "repair: none needed\n";

@@ -9,8 +9,7 @@
 # Author(s)     : The measured boundary parameterization authors
 #
 # The structural rules of the package (issue 21), checked on include/:
-#  1. internal/ is in layers that call only downward: core <- distances, borders; core <- seams;
-#     core <- atlas.
+#  1. internal/ is in layers that call only downward: core <- distances, borders, seams, atlas.
 #     A layer includes headers of its own layer, of the layers below it, and leaf public
 #     headers (public headers that include no internal header) only.
 #  2. No documented public declaration, typedef or public base class names `internal::`:

@@ -16,7 +16,7 @@ the result's figures, then the counts per class.
 
     python3 scripts/mesh_class_report.py PROGRAM [--classes MESSY,CLOSED,OPEN] [--timeout S]
 
-PROGRAM is the built measured_parameterization (e.g. build/examples/measured_parameterization,
+PROGRAM is the built measured_parameterization (e.g. build/cli/measured_parameterization,
 or the ASan build's). A class matches when the class column of PROVENANCE.md starts with it.
 Exits 1 when a run crashes, hangs, leaves an output file after an error, or succeeds with
 flipped faces or a non-finite value.

@@ -8,17 +8,20 @@
 #
 # Author(s)     : The measured boundary parameterization authors
 #
-# Hardening checks (called at the end of scripts/run_tests.sh; can be run alone):
-#  1. the test suite and the example programs built with Clang, AddressSanitizer and
+# CI's hardening step (.ci/run, after the README's test command and the CGAL 6 step; can be
+# run alone):
+#  1. the test suite, the examples and the command-line program built with Clang, AddressSanitizer and
 #     UndefinedBehaviorSanitizer (-O1, every finding fatal) in build-asan/, and the core tier of
 #     the tests run by CTest (MBP_HARDENING_EXTENDED=1: the extended tier too);
 #  2. the libFuzzer target over the command-line program's input path (test/fuzz), run for
-#     MBP_FUZZ_SECONDS (default 60) on a scratch copy of the seed corpus (test/fuzz/corpus is
+#     at most MBP_FUZZ_SECONDS (default 180; MBP_FUZZ_RUNS runs, default 100000) on a scratch copy of the seed corpus (test/fuzz/corpus is
 #     not modified). A crash, a sanitizer finding, a leak, a timeout or an out-of-memory is a
 #     failure; the input that caused it is kept in build-asan/fuzz-artifacts/.
-# Exits non-zero when any step fails. Needs clang and libclang-rt-14-dev (scripts/setup.sh).
+# Exits non-zero when any step fails. Needs clang and libclang-rt-14-dev (installed here by
+# scripts/setup.sh --hardening).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/setup.sh --hardening
 
 build=build-asan
 fuzz_seconds="${MBP_FUZZ_SECONDS:-180}"
@@ -31,7 +34,8 @@ export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 
 # -- 1. sanitizer build and tests ------------------------------------------------------------
 # -O1 keeps the instrumented build and the tests fast; assertions stay on (no NDEBUG).
-# The benchmark is not built; the examples are (test_cli runs the command-line program).
+# The benchmarks are not built (measurement programs: the CGAL 6 step builds them); the
+# examples and the command-line program are (test_cli runs it).
 echo "hardening: ASan+UBSan build in $build"
 cmake -S . -B "$build" \
   -DCMAKE_CXX_COMPILER=clang++ \

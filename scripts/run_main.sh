@@ -16,6 +16,6 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$(nproc)" --target measured_parameterization_cli
-build/examples/measured_parameterization \
+build/cli/measured_parameterization \
   --output=build/measured_parameterization.obj \
   --svg=build/measured_parameterization.svg

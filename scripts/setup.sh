@@ -11,7 +11,8 @@
 # Installs what this package needs on Debian 12 (bookworm) and nothing that is already there.
 # Used by the README commands and by .ci/run. Runs apt-get through sudo when not root.
 #
-#   bash scripts/setup.sh            # library, tests, examples, benchmark
+#   bash scripts/setup.sh              # library, tests, examples, command line, benchmarks
+#   bash scripts/setup.sh --hardening  # and Clang's sanitizers and libFuzzer (scripts/run_hardening.sh)
 #
 set -euo pipefail
 
@@ -24,10 +25,12 @@ packages=(
   libboost-dev libboost-graph-dev libboost-test-dev
   libsuitesparse-dev     # CHOLMOD's supernodal Cholesky (optional solver)
   libopenblas-dev        # a multithreaded BLAS for CHOLMOD
-  clang libclang-rt-14-dev  # the libFuzzer target and the sanitizer build (clang 14)
   doxygen                # the HTML reference manual (doc/)
   librsvg2-bin           # rsvg-convert: the manual's SVG figures to PNG
 )
+if [ "${1:-}" = --hardening ]; then
+  packages+=(clang libclang-rt-14-dev)  # the libFuzzer target and the sanitizer build (clang 14)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -11,7 +11,6 @@
 // automatic border's bisection for the smallest valid blend, and the conformal border's
 // blend toward the circle (the smallest simple blend, its turning angles).
 
-#define BOOST_TEST_MODULE border_search
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -42,6 +41,8 @@
 #include <limits>
 #include <string>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(border_search)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
@@ -230,3 +231,5 @@ BOOST_AUTO_TEST_CASE(conformal_border_blend_toward_the_circle_against_its_defini
   BOOST_REQUIRE(SMP::internal::polygon_from_turning_angles(smaller, l, polygon) == SMP::OK);
   BOOST_TEST(!SMP::internal::is_simple_polygon(polygon));
 }
+
+BOOST_AUTO_TEST_SUITE_END()

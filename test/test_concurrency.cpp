@@ -18,7 +18,6 @@
 // the only kind the package starts (internal::start_thread is std::async). Threads that
 // CHOLMOD's OpenMP or a threaded BLAS start on their own are counted apart.
 
-#define BOOST_TEST_MODULE concurrency
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -52,6 +51,8 @@
 #include <string>
 #include <thread>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(concurrency)
 
 // ---------------------------------------------------------------- the thread counter
 
@@ -274,3 +275,5 @@ BOOST_AUTO_TEST_CASE(a_sequential_call_starts_no_thread)
   BOOST_TEST_MESSAGE("CHOLMOD not available in this build: its sequential call not tested");
 #endif
 }
+
+BOOST_AUTO_TEST_SUITE_END()

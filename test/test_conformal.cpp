@@ -12,7 +12,6 @@
 // (2 factorizations, 4 back-substitutions), the grounded spring Laplacian, concurrency,
 // solvers, generic meshes, bad input; and with the automatic border (Automatic_border).
 
-#define BOOST_TEST_MODULE conformal
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -50,6 +49,8 @@
 #include <map>
 #include <string>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(conformal)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
@@ -617,3 +618,5 @@ MBP_TIERED_TEST_CASE(automatic_border_is_deterministic)
   }
   BOOST_TEST(worst < 1e-9);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -14,7 +14,6 @@
 // step against a dense solution of its least-squares problem, the sign of the correction,
 // the blend of a self-overlapping border, and CGAL's DCP with the drop-in border.
 
-#define BOOST_TEST_MODULE conformal_border
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -50,6 +49,8 @@
 #include <limits>
 #include <string>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(conformal_border)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
@@ -723,3 +724,5 @@ BOOST_AUTO_TEST_CASE(real_disks_automatic_border, MBP_EXTENDED_TIER)
   BOOST_TEST_MESSAGE("median automatic / circle: " << median);
   BOOST_TEST(median <= 0.02);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -11,7 +11,6 @@
 // (internal::Disk, the model of MeasuredDisk the policies see), the center locators, and the
 // quality measures, on generated meshes whose geometry is known.
 
-#define BOOST_TEST_MODULE distance_maps
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -34,6 +33,8 @@
 #include <cmath>
 #include <map>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(distance_maps)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                      K;
@@ -400,3 +401,5 @@ BOOST_AUTO_TEST_CASE(error_messages_cover_every_code)
              == "This border parameterization requires a longer border");
   BOOST_TEST(std::string(SMP::get_measured_error_message(16)) == "Unknown error");
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -14,7 +14,6 @@
 // structural properties (multi-source, symmetry, unreachable components, degenerate input,
 // O(n log n) work, counted). Measured errors are printed with --log_level=message.
 
-#define BOOST_TEST_MODULE fast_marching
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -40,6 +39,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(fast_marching)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef SMP::internal::Fast_marching                        Fast_marching;
@@ -1062,3 +1063,5 @@ BOOST_AUTO_TEST_CASE(fast_marching_on_right_angled_triangles_is_invariant_under_
       }
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -11,7 +11,6 @@
 // locator (BGDM) and the geodesic border distances (MBPGP), and the full matrix of center and
 // distance policies over Surface_mesh, Polyhedron_3 and Seam_mesh.
 
-#define BOOST_TEST_MODULE geodesics
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -47,6 +46,8 @@
 #include <type_traits>
 #include <typeinfo>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(geodesics)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
@@ -415,3 +416,5 @@ BOOST_AUTO_TEST_CASE(every_center_and_distance_combination_on_every_mesh_type)
     run_all(seam, "Seam_mesh");
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -11,7 +11,6 @@
 // parameterizers: the polar border map, CGAL's conventions, generic meshes, invariance, and
 // one test per kind of bad input.
 
-#define BOOST_TEST_MODULE measured_border
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -45,6 +44,8 @@
 #include <limits>
 #include <map>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(measured_border)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                               SC;
@@ -673,3 +674,5 @@ BOOST_AUTO_TEST_CASE(bad_input_not_a_disk)
   BOOST_REQUIRE(ok);
   expect_failure(pinched, mbp_test::longest_border(pinched), SMP::ERROR_NO_TOPOLOGICAL_DISC);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -11,7 +11,6 @@
 // with the measured border against DCP with CGAL's circular arc-length border, the Poisson
 // distance map's positivity (paper Theorem A1), and Polyhedron_3 against Surface_mesh.
 
-#define BOOST_TEST_MODULE real_meshes
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -37,6 +36,8 @@
 #include <map>
 #include <string>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(real_meshes)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
@@ -289,3 +290,5 @@ MBP_TIERED_TEST_CASE(polyhedron_and_surface_mesh_agree_on_a_real_mesh)
   }
   BOOST_TEST(worst < 1e-9);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -16,7 +16,6 @@
 //  - a pinched disk (a vertex whose faces form several fans) is ERROR_NO_TOPOLOGICAL_DISC,
 //    whatever the order of the faces, for every entry point that takes a disk.
 
-#define BOOST_TEST_MODULE robustness
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -46,6 +45,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(robustness)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
@@ -516,3 +517,5 @@ BOOST_AUTO_TEST_CASE(pinched_disks_are_not_topological_disks)
     check_rejected(tie, loop.first);
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -12,7 +12,6 @@
 // distance maps and the reports' lengths are scaled exactly for a power of two, to 1e-12
 // relative otherwise.
 
-#define BOOST_TEST_MODULE scale_invariance
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -37,6 +36,8 @@
 #include <type_traits>
 #include <utility>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(scale_invariance)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
@@ -260,3 +261,5 @@ BOOST_AUTO_TEST_CASE(quality_figures_do_not_depend_on_the_scale_of_the_mesh_or_o
         check_same_quality(SMP::measure_quality(m, faces(m), scaled), reference, 1e-12);
       }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -16,7 +16,6 @@
 // cylinder, a disk with two holes, a punctured torus. The extended tier runs every closed,
 // holed and higher-genus mesh of the project's meshes.
 
-#define BOOST_TEST_MODULE seams
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -41,6 +40,8 @@
 #include <set>
 #include <string>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(seams)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                        K;
@@ -737,3 +738,5 @@ BOOST_AUTO_TEST_CASE(project_meshes_are_cut_into_disks, MBP_EXTENDED_TIER)
     BOOST_CHECK_EQUAL(s.report.problem, m.second);
   }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -14,7 +14,6 @@
 //    and as the measured border's distance (the grounded spring system), and the mean edge
 //    length g, against dense computations made here on an irregular mesh.
 
-#define BOOST_TEST_MODULE solvers
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -46,6 +45,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(solvers)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
@@ -354,3 +355,5 @@ BOOST_AUTO_TEST_CASE(mean_edge_length_g_counts_every_edge_once_on_border_vertice
       BOOST_TEST(worst <= 1e-14);
     }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

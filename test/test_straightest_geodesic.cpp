@@ -13,7 +13,6 @@
 // refinement, the polyline's properties, real meshes (how often the border is reached), and
 // degenerate input.
 
-#define BOOST_TEST_MODULE straightest_geodesic
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -39,6 +38,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(straightest_geodesic)
 
 namespace SMPI = CGAL::Surface_mesh_parameterization::internal;
 typedef SMPI::Straightest_geodesic_tracer Tracer;
@@ -1138,3 +1139,5 @@ BOOST_AUTO_TEST_CASE(robust_on_noisy_and_degenerate_meshes)
     }
   BOOST_TEST(successes > 0);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -10,7 +10,6 @@
 // Validity: the one-to-one tests, the repair of folded measured parameterizations, and
 // meshes with holes (filled virtually for the solves, every hole a simple polygon).
 
-#define BOOST_TEST_MODULE validity
 #include <boost/test/unit_test.hpp>
 
 #include "test_support.h"
@@ -35,6 +34,8 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(validity)
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>                          K;
@@ -332,3 +333,5 @@ MBP_TIERED_TEST_CASE(real_folds_of_the_poisson_border_are_repaired_or_rejected)
       BOOST_TEST(check_repair(m, Conformal::Border_policy()));
     }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -13,7 +13,7 @@
 //   make_figures MESH_DIR FIG_DIR WORK_DIR [--zoom=Z]
 //
 // writes into WORK_DIR one SVG per composite figure (3D views rendered by raster.h and
-// embedded as PNG, UV layouts drawn as vectors by examples/cli/svg_layout.h); the script
+// embedded as PNG, UV layouts drawn as vectors by cli/svg_layout.h); the script
 // scripts/make_figures.sh turns each into FIG_DIR/NAME.png with rsvg-convert (at zoom Z, the
 // resolution the 3D views are rendered for). FIG_DIR receives the vector UV layouts (SVG) and
 // figures.md, which lists every figure with what it shows and its distortion figures.
@@ -25,26 +25,34 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/Eigen_sparse_matrix.h>
 
+#include <CGAL/Surface_mesh_parameterization/Automatic_border.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Fixed_center.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_center_locator.h>
-#include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/geodesic_distance_map.h>
+#include <CGAL/Surface_mesh_parameterization/geodesic_method_tags.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 #include <CGAL/Surface_mesh_parameterization/poisson_distance_map.h>
 
 #include <Eigen/SparseLU>
 
-#include "../../examples/cli/svg_layout.h"
+#include "../../cli/svg_layout.h"
 #include "raster.h"
 
 #include <algorithm>
@@ -58,6 +66,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 typedef CGAL::Simple_cartesian<double>                      Kernel;
@@ -75,14 +84,16 @@ using mbp_fig::Vec3;
 
 typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > LU;
 typedef SMP::Measured_conformal_parameterizer_3<Mesh>                                    MBPPP;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator<Mesh>,
-                                                SMP::Geodesic_border_distance<Mesh> >     MBPGP;
-typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Geodesic_center_locator<Mesh>,
-                                                SMP::Poisson_border_distance<Mesh> >      BGDM_PP;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator,
+                                                SMP::Geodesic_border_distance<> >         MBPGP;
+typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Geodesic_center_locator<>,
+                                                SMP::Poisson_border_distance>             BGDM_PP;
 typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh>,
-                                                SMP::Poisson_border_distance<Mesh> >      Fixed_PP;
+                                                SMP::Poisson_border_distance>             Fixed_PP;
 typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh>,
-                                                SMP::Geodesic_border_distance<Mesh> >     Fixed_GP;
+                                                SMP::Geodesic_border_distance<> >         Fixed_GP;
+// the automatic border with the paper's default policies (Poisson) for its measured member
+typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<> >                   Automatic_P;
 typedef SMP::Discrete_conformal_map_parameterizer_3<
   Mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh>, LU>                       DCP_circle;
 typedef SMP::LSCM_parameterizer_3<Mesh>                                                  LSCM;
@@ -98,7 +109,42 @@ std::string fixed(double x, int decimals = 4)
   return b;
 }
 
-std::string esc(const std::string& s) { return mbp_cli::internal::xml_escaped(s); }
+std::string esc(const std::string& s)
+{
+  std::string e;
+  for(char c : s)
+  {
+    switch(c)
+    {
+    case '&': e += "&amp;"; break;
+    case '<': e += "&lt;"; break;
+    case '>': e += "&gt;"; break;
+    case '"': e += "&quot;"; break;
+    default:
+      // control characters are not allowed in XML 1.0
+      e += (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n') ? '?' : c;
+    }
+  }
+  return e;
+}
+
+// The value of a color bar's tick, short: 0.001, 0.25, 3e-05.
+std::string tick_text(double x)
+{
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.2g", x);
+  return buffer;
+}
+
+// The color of raster.h's viridis map at t in [0, 1], as an SVG color.
+std::string viridis_color(double t)
+{
+  const Vec3 c = mbp_fig::viridis(t);
+  char hex[8];
+  std::snprintf(hex, sizeof(hex), "#%02x%02x%02x", unsigned(std::lround(c[0] * 255.)),
+                unsigned(std::lround(c[1] * 255.)), unsigned(std::lround(c[2] * 255.)));
+  return hex;
+}
 
 // ------------------------------------------------------------------------------- meshes
 
@@ -173,13 +219,16 @@ struct Result
   std::string note;                   // repair, chosen border...
 };
 
-template <class Parameterizer>
-Result run_method(Input& in, Parameterizer& parameterizer, const std::string& method)
+typedef Mesh::Property_map<vertex_descriptor, Point_2> UV_map;
+
+// The UVs and the per-face quality of `parameterize(uvmap)`.
+template <class Parameterize>
+Result run(Input& in, const std::string& method, Parameterize parameterize)
 {
   Result r;
   r.method = method;
-  auto uvmap = in.mesh.add_property_map<vertex_descriptor, Point_2>("v:figure_uv", Point_2(0., 0.)).first;
-  const SMP::Error_code status = SMP::parameterize(in.mesh, parameterizer, in.bhd, uvmap);
+  UV_map uvmap = in.mesh.add_property_map<vertex_descriptor, Point_2>("v:figure_uv", Point_2(0., 0.)).first;
+  const SMP::Error_code status = parameterize(uvmap);
   if(status != SMP::OK)
   {
     std::cerr << "warning: " << method << " failed on " << in.file << ": " << SMP::get_measured_error_message(status)
@@ -199,23 +248,38 @@ Result run_method(Input& in, Parameterizer& parameterizer, const std::string& me
   return r;
 }
 
-template <class Measured>
-Result measured(Input& in, Measured& parameterizer, const std::string& method)
+// A parameterizer of CGAL.
+template <class Parameterizer>
+Result run_method(Input& in, const Parameterizer& parameterizer, const std::string& method)
 {
-  Result r = run_method(in, parameterizer, method);
+  Parameterizer p = parameterizer;
+  return run(in, method, [&](UV_map uvmap) { return SMP::parameterize(in.mesh, p, in.bhd, uvmap); });
+}
+
+template <class BorderPolicy>
+struct Is_automatic : std::false_type { };
+template <class CenterLocator, class BorderDistance>
+struct Is_automatic<SMP::Automatic_border<CenterLocator, BorderDistance> > : std::true_type { };
+
+// A parameterizer of this package, with its report: the center, the repair, the border kept.
+template <class Ours>
+Result measured(Input& in, const Ours& parameterizer, const std::string& method)
+{
+  SMP::Parameterization_report report;
+  Result r = run(in, method, [&](UV_map uvmap) { return SMP::parameterize(in.mesh, parameterizer, in.bhd, uvmap, &report); });
   if(!r.ok)
     return r;
-  r.center = (parameterizer.center() == Mesh::null_vertex()) ? none : std::size_t(parameterizer.center().idx());
-  const auto& report = parameterizer.last_report();
-  if(parameterizer.border_choice() == Measured::AUTOMATIC_BORDER && report.chosen_candidate >= 0)
+  // the center's position in vertices(mesh): its index (the meshes have no removed vertex)
+  r.center = report.has_center ? report.center : none;
+  if(Is_automatic<typename Ours::Border_policy>::value && report.chosen_candidate >= 0)
   {
-    const auto& c = report.border_candidates[std::size_t(report.chosen_candidate)];
-    const char* family = (c.family == Measured::CIRCLE) ? "circle"
-                         : (c.family == Measured::MEASURED) ? "measured border"
-                                                            : "conformal border";
-    r.note = (c.family == Measured::CIRCLE) ? std::string("kept: circle")
-                                            : std::string("kept: ") + family +
-                                                (c.blend > 0. ? ", blend " + fixed(c.blend, 2) : std::string());
+    const SMP::Border_candidate& c = report.border_candidates[std::size_t(report.chosen_candidate)];
+    const char* family = (c.family == SMP::CIRCLE) ? "circle"
+                         : (c.family == SMP::MEASURED) ? "measured border"
+                                                       : "conformal border";
+    r.note = (c.family == SMP::CIRCLE) ? std::string("kept: circle")
+                                       : std::string("kept: ") + family +
+                                           (c.blend > 0. ? ", blend " + fixed(c.blend, 2) : std::string());
   }
   else if(report.repaired)
     r.note = std::string("repaired: blend ") + fixed(report.blend, 2) +
@@ -390,7 +454,7 @@ public:
     {
       const double top = y + h * (bins - 1 - b) / bins;
       m_body += "<rect x=\"" + fixed(x, 1) + "\" y=\"" + fixed(top, 2) + "\" width=\"" + fixed(w, 1) + "\" height=\"" +
-                fixed(h / bins + 0.3, 2) + "\" fill=\"" + mbp_cli::internal::viridis((b + 0.5) / bins) + "\"/>";
+                fixed(h / bins + 0.3, 2) + "\" fill=\"" + viridis_color((b + 0.5) / bins) + "\"/>";
     }
     m_body += "<rect x=\"" + fixed(x, 1) + "\" y=\"" + fixed(y, 1) + "\" width=\"" + fixed(w, 1) + "\" height=\"" +
               fixed(h, 1) + "\" fill=\"none\" stroke=\"#000000\" stroke-width=\"0.8\"/>\n";
@@ -400,8 +464,8 @@ public:
       m_body += "<path d=\"M" + fixed(x + w, 1) + " " + fixed(ty, 1) + "h5\" stroke=\"#000000\" stroke-width=\"0.8\"/>";
       text(x + w + 8., ty + 4., label, 11.);
     };
-    tick(1., "\xe2\x89\xa5 " + mbp_cli::internal::tick_text(hi));
-    tick(0., "\xe2\x89\xa4 " + mbp_cli::internal::tick_text(lo));
+    tick(1., "\xe2\x89\xa5 " + tick_text(hi));
+    tick(0., "\xe2\x89\xa4 " + tick_text(lo));
     const double gap = 14. / h;
     double last = -1.;
     const bool fine = lhi - llo < 2.;
@@ -413,7 +477,7 @@ public:
         const double t = (std::log10(m) + e - llo) / (lhi - llo);
         if(t > gap && t < 1. - gap && t > last + gap)
         {
-          tick(t, mbp_cli::internal::tick_text(m * std::pow(10., e)));
+          tick(t, tick_text(m * std::pow(10., e)));
           last = t;
         }
       }
@@ -757,9 +821,7 @@ int main(int argc, char** argv)
     // ---- README picture: what the package is for: the automatic border against CGAL's
     // circle, textures and UV domains side by side, one color range
     {
-      MBPPP automatic_p;
-      automatic_p.set_border_choice(MBPPP::AUTOMATIC_BORDER);
-      Result automatic = measured(in, automatic_p, "automatic border");
+      Result automatic = measured(in, Automatic_P(), "automatic border");
       if(!automatic.ok)
         return EXIT_FAILURE;
       normalize_uv(in, automatic);
@@ -827,22 +889,14 @@ int main(int argc, char** argv)
     for(int k = 0; k < 3; ++k)
     {
       const SMP::Fixed_center<Mesh> fixed_center(centers[k]);
-      Fixed_PP pp(fixed_center);
-      pp.set_repair(Fixed_PP::NO_REPAIR);
-      results[0][k] = measured(in, pp, "MBPPP");
+      const Fixed_PP::Border_policy pp(fixed_center);
+      results[0][k] = measured(in, Fixed_PP(pp, Fixed_PP::Solver_traits(), SMP::NO_REPAIR), "MBPPP");
       if(!results[0][k].ok)
-      {
-        pp.set_repair(Fixed_PP::BLEND_TOWARD_CIRCLE);
-        results[0][k] = measured(in, pp, "MBPPP");
-      }
-      Fixed_GP gp(fixed_center);
-      gp.set_repair(Fixed_GP::NO_REPAIR);
-      results[1][k] = measured(in, gp, "MBPGP");
+        results[0][k] = measured(in, Fixed_PP(pp, Fixed_PP::Solver_traits(), SMP::BLEND_TOWARD_CIRCLE), "MBPPP");
+      const Fixed_GP::Border_policy gp(fixed_center);
+      results[1][k] = measured(in, Fixed_GP(gp, Fixed_GP::Solver_traits(), SMP::NO_REPAIR), "MBPGP");
       if(!results[1][k].ok)
-      {
-        gp.set_repair(Fixed_GP::BLEND_TOWARD_CIRCLE);
-        results[1][k] = measured(in, gp, "MBPGP");
-      }
+        results[1][k] = measured(in, Fixed_GP(gp, Fixed_GP::Solver_traits(), SMP::BLEND_TOWARD_CIRCLE), "MBPGP");
       for(int row = 0; row < 2; ++row)
       {
         if(!results[row][k].ok)
@@ -929,15 +983,10 @@ int main(int argc, char** argv)
     for(Input* in : meshes)
     {
       std::vector<Result> row;
-      MBPPP p1;
-      row.push_back(measured(*in, p1, "MBPPP"));
-      MBPGP p2;
-      row.push_back(measured(*in, p2, "MBPGP"));
-      MBPPP p3;
-      p3.set_border_choice(MBPPP::AUTOMATIC_BORDER);
-      row.push_back(measured(*in, p3, "automatic"));
-      LSCM p4;
-      row.push_back(run_method(*in, p4, "LSCM"));
+      row.push_back(measured(*in, MBPPP(), "MBPPP"));
+      row.push_back(measured(*in, MBPGP(), "MBPGP"));
+      row.push_back(measured(*in, Automatic_P(), "automatic"));
+      row.push_back(run_method(*in, LSCM(), "LSCM"));
       for(Result& r : row)
         if(r.ok)
           normalize_uv(*in, r);
@@ -963,7 +1012,7 @@ int main(int argc, char** argv)
        << "Rows: " << nefertiti.title << ", " << lilium.title << ", " << maxface.title << ", " << mask.title
        << ". Columns: the checkerboard through MBPPP; the domains of MBPPP (BPDM center, Poisson distances), MBPGP "
           "(BPDM center, fast marching geodesic distances), the automatic border "
-          "(`set_border_choice(AUTOMATIC_BORDER)`: the best of the border family, circle, measured and conformal "
+          "(`Conformal_parameterizer_3` with `Automatic_border<>`: the best of the border family, circle, measured and conformal "
           "borders and their blends) "
           "and CGAL's `LSCM_parameterizer_3` (free border, two fixed vertices) in place of the paper's ABF++. "
           "One color range per row (per mesh), with its color bar at the end of the row: the layouts of a mesh "

@@ -277,7 +277,7 @@ inline Image render(const Tri_mesh& mesh, const Camera& camera, const Surface_st
   return image;
 }
 
-namespace internal {
+namespace detail {
 
 inline std::uint32_t crc32(const std::uint8_t* data, std::size_t n, std::uint32_t crc = 0)
 {
@@ -310,7 +310,7 @@ inline void chunk(std::string& png, const char* type, const std::string& data)
   put32(png, crc32(reinterpret_cast<const std::uint8_t*>(body.data()), body.size()));
 }
 
-} // namespace internal
+} // namespace detail
 
 /// the PNG file of `image` (8-bit RGB, deflate "stored" blocks: not compressed).
 inline std::string png_file(const Image& image)
@@ -346,20 +346,20 @@ inline std::string png_file(const Image& image)
     if(last)
       break;
   }
-  internal::put32(z, (b << 16) | a);
+  detail::put32(z, (b << 16) | a);
 
   std::string png("\x89PNG\r\n\x1a\n", 8);
   std::string ihdr;
-  internal::put32(ihdr, std::uint32_t(image.width));
-  internal::put32(ihdr, std::uint32_t(image.height));
+  detail::put32(ihdr, std::uint32_t(image.width));
+  detail::put32(ihdr, std::uint32_t(image.height));
   ihdr += char(8);  // bit depth
   ihdr += char(2);  // RGB
   ihdr += char(0);
   ihdr += char(0);
   ihdr += char(0);
-  internal::chunk(png, "IHDR", ihdr);
-  internal::chunk(png, "IDAT", z);
-  internal::chunk(png, "IEND", std::string());
+  detail::chunk(png, "IHDR", ihdr);
+  detail::chunk(png, "IDAT", z);
+  detail::chunk(png, "IEND", std::string());
   return png;
 }
 

@@ -7,12 +7,11 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// libFuzzer target over the input path of the command-line program
-// (examples/measured_parameterization.cpp): the bytes are a mesh file, read and checked by the
-// program's own helpers (the streaming readers of examples/cli/mesh_reader.h through
-// read_mesh() of examples/cli/mesh_input.h), then, when the mesh is valid and small,
-// parameterized by Measured_conformal_parameterizer_3 with the program's defaults (Poisson
-// center, Poisson border distances, repair on).
+// libFuzzer target over the input path of the command-line program (cli/): the bytes are a
+// mesh file, read and checked by the program's own helpers (the streaming readers of
+// cli/mesh_reader.cpp through read_mesh() of cli/mesh_input.h), then, when the mesh is valid
+// and small, parameterized by Measured_conformal_parameterizer_3 with the program's defaults
+// (Poisson center, Poisson border distances, repair on).
 //
 // The format is chosen from the content, as a user's file would be named: "OFF" in the first
 // bytes -> .off, "ply" -> .ply, "solid" or a binary STL whose size matches its triangle count

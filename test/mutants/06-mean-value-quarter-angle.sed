@@ -1,14 +1,4 @@
-# Copyright (c) 2026  The measured boundary parameterization authors.
-# All rights reserved.
-#
-# This file is part of the measured boundary parameterization package for CGAL.
-#
-# SPDX-License-Identifier: GPL-3.0-or-later
-#
-# Author(s)     : The measured boundary parameterization authors
-#
-# A one-line mutant for scripts/mutation_check.sh (sed script).
-# file: include/CGAL/Surface_mesh_parameterization/internal/laplacian.h
-# tests: test_edges
+# file: include/CGAL/Surface_mesh_parameterization/internal/core/laplacian.h
+# tests: test_solvers
 # breaks: mean value weights: tan(alpha / 4) instead of tan(alpha / 2)
 s/return std::tan(0.5 \* alpha) \/ u.norm();/return std::tan(0.25 * alpha) \/ u.norm();/

@@ -8,7 +8,7 @@
 # Author(s)     : The measured boundary parameterization authors
 #
 # A one-line mutant for scripts/mutation_check.sh (sed script).
-# file: include/CGAL/Surface_mesh_parameterization/internal/polar_map.h
-# tests: test_measured_border test_edges
+# file: include/CGAL/Surface_mesh_parameterization/internal/borders/polar_map.h
+# tests: test_measured_border test_scale_invariance
 # breaks: polar map orientation: border vertex k at angle +phi_k (counterclockwise) instead of -phi_k
 s/radii\[k\] \* std::sin(-angles\[k\])/radii[k] * std::sin(angles[k])/

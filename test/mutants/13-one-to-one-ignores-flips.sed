@@ -1,14 +1,4 @@
-# Copyright (c) 2026  The measured boundary parameterization authors.
-# All rights reserved.
-#
-# This file is part of the measured boundary parameterization package for CGAL.
-#
-# SPDX-License-Identifier: GPL-3.0-or-later
-#
-# Author(s)     : The measured boundary parameterization authors
-#
-# A one-line mutant for scripts/mutation_check.sh (sed script).
-# file: include/CGAL/Surface_mesh_parameterization/internal/repair.h
-# tests: test_validity test_edges
+# file: include/CGAL/Surface_mesh_parameterization/internal/core/validity.h
+# tests: test_validity
 # breaks: the one-to-one test: a flipped face is not counted
-s/^       CGAL::LEFT_TURN)$/       CGAL::LEFT_TURN \&\& false)/
+s/exact_point(uv\[static_cast<std::size_t>(t\[2\])\])) != CGAL::LEFT_TURN)/exact_point(uv[static_cast<std::size_t>(t[2])])) != CGAL::LEFT_TURN \&\& false)/

@@ -1,14 +1,4 @@
-# Copyright (c) 2026  The measured boundary parameterization authors.
-# All rights reserved.
-#
-# This file is part of the measured boundary parameterization package for CGAL.
-#
-# SPDX-License-Identifier: GPL-3.0-or-later
-#
-# Author(s)     : The measured boundary parameterization authors
-#
-# A one-line mutant for scripts/mutation_check.sh (sed script).
-# file: include/CGAL/Surface_mesh_parameterization/internal/poisson_distance.h
-# tests: test_edges test_distance_maps
+# file: include/CGAL/Surface_mesh_parameterization/internal/distances/poisson_distance.h
+# tests: test_solvers
 # breaks: Poisson distance map from sources: right-hand side g_i instead of d_i g_i
-/spring_poisson_distance(Patch/,$ s/rhs\[r\] = d\[i\] \* g\[i\];/rhs[r] = g[i];/
+s/status = engine->solve_scattered(poisson_right_hand_side(engine->row_sums(), disk.mean_spoke_lengths()), values);/status = engine->solve_scattered(disk.mean_spoke_lengths(), values);/

@@ -88,8 +88,14 @@ public:
   static_assert(!Border_policy::searches, "a border parameterizer lays out one border: use Conformal_parameterizer_3");
 
   /// creates a border parameterizer with the given policy and solver traits.
-  explicit Border_parameterizer_3(Border_policy border = Border_policy(), Solver_traits solver_traits = Solver_traits())
-    : m_border(border), m_traits(solver_traits)
+  ///
+  /// CGAL's fixed border parameterizers call the copy of the border parameterizer they hold
+  /// without a report: to read the report of those calls, give `report_sink`, where every
+  /// call of this object or of its copies that is made without a report of its own writes
+  /// its report (the caller owns it; it must outlive the copies).
+  explicit Border_parameterizer_3(Border_policy border = Border_policy(), Solver_traits solver_traits = Solver_traits(),
+                                  Parameterization_report* report_sink = nullptr)
+    : m_border(border), m_traits(solver_traits), m_report_sink(report_sink)
   { }
 
   /// the border policy.
@@ -142,8 +148,8 @@ public:
     r.statistics = disk.statistics();
     r.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     m_convex = (status == OK && r.border_convex);
-    if(report)
-      *report = r;
+    if(report != nullptr || m_report_sink != nullptr)
+      *(report != nullptr ? report : m_report_sink) = r;
     return status;
   }
 
@@ -174,6 +180,7 @@ private:
 
   Border_policy m_border;
   Solver_traits m_traits;
+  Parameterization_report* m_report_sink;
   bool m_convex = false;
 };
 

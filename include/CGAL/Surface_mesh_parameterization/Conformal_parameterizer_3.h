@@ -129,6 +129,11 @@ public:
     : m_border(border), m_traits(solver_traits), m_repair(repair)
   { }
 
+  /// creates a parameterizer with the given border policy and repair (default solver traits).
+  Conformal_parameterizer_3(Border_policy border, Repair repair)
+    : Conformal_parameterizer_3(border, Solver_traits(), repair)
+  { }
+
   /// the border policy.
   const Border_policy& border_policy() const { return m_border; }
   /// the solver traits.

@@ -125,8 +125,10 @@ struct Parameterization_report
   /// whether a center was located (also when a later step failed)
   bool has_center = false;
   std::size_t center = 0;  ///< the center vertex, by its position in `vertices(mesh)`
-  /// distance from the center to each border vertex (0 for a vertex that the distance
-  /// policy could not reach, after `ERROR_DISTANCE_COMPUTATION_FAILED`)
+  /// distance from the center to each border vertex, as the distance policy measures it, in
+  /// the mesh's unit (geodesic distances are lengths; the Poisson distance map's values are
+  /// those of the paper's Eq. 1, which scale as lengths but are not lengths); 0 for a vertex
+  /// that the policy could not reach, after `ERROR_DISTANCE_COMPUTATION_FAILED`
   std::vector<double> border_distances;
   std::size_t unreachable_border_vertices = 0;  ///< border vertices the distance policy could not reach
   /// polar angle \f$ \varphi_k \in [0, 2\pi) \f$ of each border vertex (the UV angle is
@@ -135,7 +137,7 @@ struct Parameterization_report
   /// UV position of the polar origin: border vertex `k` is at
   /// `polar_origin + polar_scale * border_distances[k] * (cos(-phi_k), sin(-phi_k))`
   std::array<double, 2> polar_origin = {{0.5, 0.5}};
-  double polar_scale = 1.;  ///< UV length per unit of distance (in the mesh's unit of length)
+  double polar_scale = 1.;  ///< UV length per unit of `border_distances`
   /// @}
 
   /// \name The conformal border (when it was computed)

@@ -408,13 +408,10 @@ bool is_one_to_one_uv_map(const TriangleMesh& tm, const FaceRange& face_range, V
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor     face_descriptor;
   typedef internal::Validity_kernel                                         EK;
-  typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t,
-                                                    CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS> Box;
 
   internal::Mesh_indexer<TriangleMesh> ids(tm);
   std::vector<std::array<std::size_t, 3> > triangle_vertices;
   std::vector<std::array<EK::Point_2, 3> > corners;
-  std::vector<Box> boxes;
   for(face_descriptor f : face_range)
   {
     std::array<std::size_t, 3> vs;
@@ -431,22 +428,10 @@ bool is_one_to_one_uv_map(const TriangleMesh& tm, const FaceRange& face_range, V
     }
     if(k != 3 || CGAL::orientation(q[0], q[1], q[2]) != CGAL::LEFT_TURN)
       return false;
-    boxes.emplace_back(q[0].bbox() + q[1].bbox() + q[2].bbox(), corners.size());
     triangle_vertices.push_back(vs);
     corners.push_back(q);
   }
-  // pointers: the boxes' ids are their addresses, which the algorithm's copies keep
-  std::vector<const Box*> box_pointers;
-  box_pointers.reserve(boxes.size());
-  for(const Box& b : boxes)
-    box_pointers.push_back(&b);
-  bool overlap = false;
-  CGAL::box_self_intersection_d(box_pointers.begin(), box_pointers.end(), [&](const Box* a, const Box* b) {
-    const std::size_t i = a->info(), j = b->info();
-    if(!overlap && internal::uv_triangles_overlap(triangle_vertices[i], corners[i], triangle_vertices[j], corners[j]))
-      overlap = true;
-  });
-  return !overlap;
+  return !internal::any_uv_triangles_overlap(triangle_vertices, corners);
 }
 
 } // namespace Surface_mesh_parameterization

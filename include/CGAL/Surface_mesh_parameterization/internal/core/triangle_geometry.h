@@ -15,6 +15,7 @@
 // triangle set.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>

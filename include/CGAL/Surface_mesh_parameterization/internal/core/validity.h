@@ -26,6 +26,7 @@
 // border of the package's layouts is a simple polygon by construction (star-shaped, convex,
 // or tested with is_simple_polygon()).
 
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <Eigen/Core>
@@ -221,6 +222,29 @@ inline bool uv_triangles_overlap(const std::array<std::size_t, 3>& a, const std:
     return CGAL::do_intersect(K::Triangle_2(p[0], p[1], p[2]), sb) || CGAL::do_intersect(K::Triangle_2(q[0], q[1], q[2]), sa);
   }
   return CGAL::do_intersect(K::Triangle_2(p[0], p[1], p[2]), K::Triangle_2(q[0], q[1], q[2]));
+}
+
+// Whether two of the UV triangles overlap (uv_triangles_overlap()); `vertices` name the corners
+// of each triangle. Only the pairs whose bounding boxes meet are tested (CGAL's
+// box_self_intersection_d), O(F log F) typically.
+inline bool any_uv_triangles_overlap(const std::vector<std::array<std::size_t, 3> >& vertices,
+                                     const std::vector<std::array<Validity_kernel::Point_2, 3> >& corners)
+{
+  typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t, CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS> Box;
+  std::vector<Box> boxes;
+  boxes.reserve(corners.size());
+  for(std::size_t i = 0; i < corners.size(); ++i)
+    boxes.emplace_back(corners[i][0].bbox() + corners[i][1].bbox() + corners[i][2].bbox(), i);
+  // pointers: the boxes' ids are their addresses, which the algorithm's copies keep
+  std::vector<const Box*> pointers;
+  pointers.reserve(boxes.size());
+  for(const Box& b : boxes)
+    pointers.push_back(&b);
+  bool overlap = false;
+  CGAL::box_self_intersection_d(pointers.begin(), pointers.end(), [&](const Box* a, const Box* b) {
+    overlap = overlap || uv_triangles_overlap(vertices[a->info()], corners[a->info()], vertices[b->info()], corners[b->info()]);
+  });
+  return overlap;
 }
 
 } // namespace internal

@@ -44,7 +44,7 @@
 
 namespace mbp_cli {
 
-namespace internal {
+namespace detail {
 
 // The whitespace-separated tokens of `line`.
 inline std::vector<std::string> tokens_of(const std::string& line)
@@ -70,30 +70,18 @@ inline std::string parse_index(const std::string& token, std::size_t& value)
   return std::string();
 }
 
-} // namespace internal
-
-/// reads the seams of the CGAL selection file `path` for the mesh `tm`: the edges of its
-/// third line, as pairs of 0-based vertex indices in the order of `vertices(tm)` (the file
-/// order for a mesh read from a file, as in CGAL's `Seam_mesh::add_seams()`). On success,
-/// returns an empty string and sets `seams` to the edges, in file order. Otherwise returns
-/// the first problem, naming the line and the edge: no such file, not three lines, a token
-/// that is not an index, an index out of range, an odd number of indices, no edge, a pair
-/// that is not an edge of `tm`, an edge on the border of `tm` (already cut), an edge given
-/// twice. The caller prefixes the file name.
-///
-/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`.
-template <class TriangleMesh>
-std::string read_seam_selection(const std::string& path, const TriangleMesh& tm,
-                                std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams)
+inline const std::string& selection_format()
 {
-  namespace fs = std::filesystem;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor   edge_descriptor;
-  seams.clear();
-
-  const std::string format =
+  static const std::string format =
     "a selection file has three lines: the selected vertices, the selected faces, and the seam edges as pairs"
     " of vertex indices";
+  return format;
+}
+
+// The lines of the selection file `path` (without a final '\r'), or why it cannot be read.
+inline std::string selection_lines(const std::string& path, std::vector<std::string>& lines)
+{
+  namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if(!fs::exists(status))
@@ -103,7 +91,6 @@ std::string read_seam_selection(const std::string& path, const TriangleMesh& tm,
   std::ifstream in(path, std::ios::binary);
   if(!in)
     return std::string("cannot open: ") + std::strerror(errno);
-  std::vector<std::string> lines;
   for(std::string line; std::getline(in, line);)
   {
     if(!line.empty() && line.back() == '\r')
@@ -113,22 +100,24 @@ std::string read_seam_selection(const std::string& path, const TriangleMesh& tm,
   if(in.bad())
     return std::string("cannot read it: ") + std::strerror(errno);
   if(lines.empty())
-    return "the file is empty (" + format + ")";
+    return "the file is empty (" + selection_format() + ")";
+  return std::string();
+}
 
-  const std::vector<vertex_descriptor> by_index(vertices(tm).begin(), vertices(tm).end());
-  const std::size_t nv = by_index.size(), nf = static_cast<std::size_t>(std::distance(faces(tm).begin(), faces(tm).end()));
-  const std::string vertex_range = " (the mesh has " + std::to_string(nv) + " vertices, numbered from 0 in file order)";
-
-  // Every line holds indices. Lines 1 and 2, selected vertices and faces, are checked so that
-  // a selection of another mesh or a file of another kind is recognized.
-  std::vector<std::size_t> indices[3];
+// The indices of the three lines. Every line holds indices. Lines 1 and 2, selected vertices
+// and faces (`nv` and `nf` of them in the mesh), are checked so that a selection of another
+// mesh or a file of another kind is recognized.
+inline std::string selection_indices(const std::vector<std::string>& lines, std::size_t nv, std::size_t nf,
+                                     const std::string& vertex_range, std::vector<std::size_t> (&indices)[3])
+{
+  const std::string& format = selection_format();
   for(std::size_t l = 0; l < lines.size(); ++l)
-    for(const std::string& token : internal::tokens_of(lines[l]))
+    for(const std::string& token : tokens_of(lines[l]))
     {
       if(l >= 3)
         return "line " + std::to_string(l + 1) + ": unexpected text after the seam edges of line 3 (" + format + ")";
       std::size_t i = 0;
-      const std::string error = internal::parse_index(token, i);
+      const std::string error = parse_index(token, i);
       if(!error.empty())
         return "line " + std::to_string(l + 1) + ": " + error + " (" + format + ")";
       if(l == 0 && i >= nv)
@@ -138,17 +127,19 @@ std::string read_seam_selection(const std::string& path, const TriangleMesh& tm,
                " faces); is the file for another mesh?";
       indices[l].push_back(i);
     }
+  return std::string();
+}
 
-  // line 3: the seam edges
-  if(lines.size() < 3)
-    return "it has " + std::to_string(lines.size()) + (lines.size() == 1 ? " line" : " lines") +
-           ", so no seam edges (" + format + ")";
-  const std::vector<std::size_t>& e = indices[2];
-  if(e.empty())
-    return "line 3 lists no seam edge (" + format + ")";
-  if(e.size() % 2 != 0)
-    return "line 3 has an odd number of vertex indices (" + std::to_string(e.size()) +
-           "): seam edges are pairs of vertex indices";
+// The seam edges of the pairs of vertex indices `e` (line 3) into `seams`, or the first pair
+// that is not an interior edge of `tm` given once.
+template <class TriangleMesh>
+std::string seam_edges(const std::vector<std::size_t>& e, const TriangleMesh& tm, const std::string& vertex_range,
+                       std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor   edge_descriptor;
+  const std::vector<vertex_descriptor> by_index(vertices(tm).begin(), vertices(tm).end());
+  const std::size_t nv = by_index.size();
   std::map<edge_descriptor, std::size_t> first_pair;  // edge -> its pair number (from 1)
   for(std::size_t k = 0; k < e.size(); k += 2)
   {
@@ -172,14 +163,57 @@ std::string read_seam_selection(const std::string& path, const TriangleMesh& tm,
   return std::string();
 }
 
+} // namespace detail
+
+/// reads the seams of the CGAL selection file `path` for the mesh `tm`: the edges of its
+/// third line, as pairs of 0-based vertex indices in the order of `vertices(tm)` (the file
+/// order for a mesh read from a file, as in CGAL's `Seam_mesh::add_seams()`). On success,
+/// returns an empty string and sets `seams` to the edges, in file order. Otherwise returns
+/// the first problem, naming the line and the edge: no such file, not three lines, a token
+/// that is not an index, an index out of range, an odd number of indices, no edge, a pair
+/// that is not an edge of `tm`, an edge on the border of `tm` (already cut), an edge given
+/// twice. The caller prefixes the file name.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`.
+template <class TriangleMesh>
+std::string read_seam_selection(const std::string& path, const TriangleMesh& tm,
+                                std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams)
+{
+  seams.clear();
+  const std::string& format = detail::selection_format();
+  std::vector<std::string> lines;
+  std::string error = detail::selection_lines(path, lines);
+  if(!error.empty())
+    return error;
+  const std::size_t nv = static_cast<std::size_t>(std::distance(vertices(tm).begin(), vertices(tm).end()));
+  const std::size_t nf = static_cast<std::size_t>(std::distance(faces(tm).begin(), faces(tm).end()));
+  const std::string vertex_range = " (the mesh has " + std::to_string(nv) + " vertices, numbered from 0 in file order)";
+  std::vector<std::size_t> indices[3];
+  error = detail::selection_indices(lines, nv, nf, vertex_range, indices);
+  if(!error.empty())
+    return error;
+  // line 3: the seam edges
+  if(lines.size() < 3)
+    return "it has " + std::to_string(lines.size()) + (lines.size() == 1 ? " line" : " lines") +
+           ", so no seam edges (" + format + ")";
+  const std::vector<std::size_t>& e = indices[2];
+  if(e.empty())
+    return "line 3 lists no seam edge (" + format + ")";
+  if(e.size() % 2 != 0)
+    return "line 3 has an odd number of vertex indices (" + std::to_string(e.size()) +
+           "): seam edges are pairs of vertex indices";
+  return detail::seam_edges(e, tm, vertex_range, seams);
+}
+
 /// the text of the CGAL selection file of the seams `seams` (edges of `tm`), which
 /// `read_seam_selection()` reads back: line 1 the selected vertices (`cones`), line 2 the
 /// selected faces (none), line 3 the seam edges as pairs of 0-based vertex indices in the
-/// order of `vertices(tm)`.
+/// order of `vertices(tm)`. The cones are given by their positions in `vertices(tm)` (as
+/// `Disk_seams_report::cones`).
 template <class TriangleMesh>
 std::string seam_selection_text(const TriangleMesh& tm,
                                 const std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor>& seams,
-                                const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& cones)
+                                const std::vector<std::size_t>& cones)
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
@@ -188,7 +222,7 @@ std::string seam_selection_text(const TriangleMesh& tm,
     put(index, v, i++);
   std::string text;
   for(std::size_t k = 0; k < cones.size(); ++k)
-    text += (k > 0 ? " " : "") + std::to_string(get(index, cones[k]));
+    text += (k > 0 ? " " : "") + std::to_string(cones[k]);
   text += "\n\n";
   for(std::size_t k = 0; k < seams.size(); ++k)
     text += (k > 0 ? " " : "") + std::to_string(get(index, source(seams[k], tm))) + " " +

@@ -70,7 +70,7 @@ inline std::string lowercase_extension(const std::string& path)
   return ext;
 }
 
-namespace internal {
+namespace detail {
 
 // Why the faces of `soup` do not form a polygon mesh, found after Euler::add_face refused
 // face `failed` (the faces before it were added): a face of fewer than three vertices or
@@ -115,37 +115,31 @@ inline std::string explain_soup(const Polygon_soup& soup, std::size_t failed)
          "form one fan)";
 }
 
-} // namespace internal
+} // namespace detail
 
-/// reads the polygon mesh of the file `path` (.off, .obj, .ply or .stl) with the streaming
-/// readers of mesh_reader.h, then builds it as CGAL's polygon soup to polygon mesh does
-/// (every point a vertex, in file order; `Euler::add_face` in file order, which refuses a
-/// face that would break the halfedge structure). Vertices keep the order of the file (STL:
-/// equal points merged, in order of first appearance). On failure, the message names the
-/// problem (the caller prefixes the file name).
-template <class Mesh>
-Failure read_mesh(const std::string& path, Mesh& mesh)
+namespace detail {
+
+// The failure of a file whose extension is not .off, .obj, .ply or .stl: a missing file or a
+// directory is named first, as for the others.
+inline Failure unsupported_extension(const std::string& path)
 {
-  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::property_traits<
-    typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point_3;
   Failure f;
-  const std::string ext = lowercase_extension(path);
-  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+  struct stat st;
+  if(::stat(path.c_str(), &st) != 0 || S_ISDIR(st.st_mode))  // name these first
   {
-    struct stat st;
-    if(::stat(path.c_str(), &st) != 0 || S_ISDIR(st.st_mode))  // name these first
-    {
-      Polygon_soup none;
-      f.detail = read_polygon_soup(path, "off", none).message;
-      return f;
-    }
-    f.detail = "unsupported file extension '" + std::filesystem::path(path).extension().string() +
-               "' (expected .off, .obj, .ply or .stl)";
+    Polygon_soup none;
+    f.detail = read_polygon_soup(path, "off", none).message;
     return f;
   }
+  f.detail = "unsupported file extension '" + std::filesystem::path(path).extension().string() +
+             "' (expected .off, .obj, .ply or .stl)";
+  return f;
+}
 
-  Polygon_soup soup;
+// Reads the polygon soup of `path` with the readers of mesh_reader.h.
+inline Failure read_soup(const std::string& path, const std::string& ext, Polygon_soup& soup)
+{
+  Failure f;
   try
   {
     const Read_error e = read_polygon_soup(path, ext, soup);
@@ -156,15 +150,36 @@ Failure read_mesh(const std::string& path, Mesh& mesh)
                   e.message == "the file is empty" || e.message.rfind("cannot open", 0) == 0)
                    ? e.message
                    : "cannot read it: " + e.message;
-      return f;
     }
   }
   catch(const std::bad_alloc&)  // the counts are checked against the file size: not expected
   {
     f.detail = "cannot read it: out of memory";
-    return f;
   }
+  return f;
+}
 
+// Whether the vertices of `face` are at least three and distinct.
+template <class VertexDescriptor>
+bool distinct_vertices(const std::vector<VertexDescriptor>& face)
+{
+  if(face.size() < 3)
+    return false;
+  if(face.size() == 3)
+    return face[0] != face[1] && face[1] != face[2] && face[0] != face[2];
+  std::vector<VertexDescriptor> sorted = face;
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+}
+
+// Builds `mesh` from `soup` as CGAL's polygon soup to polygon mesh does (the points are freed
+// on the way), or says why the faces do not form a polygon mesh.
+template <class Mesh>
+Failure build_mesh(Polygon_soup& soup, Mesh& mesh)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::property_traits<
+    typename boost::property_map<Mesh, CGAL::vertex_point_t>::type>::value_type Point_3;
   mesh.reserve(static_cast<typename Mesh::size_type>(soup.points.size()),
                static_cast<typename Mesh::size_type>(std::min<std::size_t>(soup.corners.size(),
                                                                            soup.points.size() + soup.number_of_faces() + 64)),
@@ -178,29 +193,42 @@ Failure read_mesh(const std::string& path, Mesh& mesh)
   }
   std::vector<std::array<double, 3> >().swap(soup.points);
   std::vector<vertex_descriptor> face;
+  Failure f;
   for(std::size_t i = 0; i < soup.number_of_faces(); ++i)
   {
     face.clear();
     const std::size_t end = soup.face_end[i];
     for(std::size_t k = soup.face_begin(i); k < end; ++k)
       face.push_back(vertex[soup.corners[k]]);
-    bool distinct = face.size() >= 3;
-    if(distinct && face.size() == 3)
-      distinct = face[0] != face[1] && face[1] != face[2] && face[0] != face[2];
-    else if(distinct)
-    {
-      std::vector<vertex_descriptor> sorted = face;
-      std::sort(sorted.begin(), sorted.end());
-      distinct = std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
-    }
-    if(!distinct || CGAL::Euler::add_face(face, mesh) == boost::graph_traits<Mesh>::null_face())
+    if(!distinct_vertices(face) || CGAL::Euler::add_face(face, mesh) == boost::graph_traits<Mesh>::null_face())
     {
       mesh.clear();
-      f.detail = "not a polygon mesh: " + internal::explain_soup(soup, i);
+      f.detail = "not a polygon mesh: " + explain_soup(soup, i);
       return f;
     }
   }
   return f;
+}
+
+} // namespace detail
+
+/// reads the polygon mesh of the file `path` (.off, .obj, .ply or .stl) with the streaming
+/// readers of mesh_reader.h, then builds it as CGAL's polygon soup to polygon mesh does
+/// (every point a vertex, in file order; `Euler::add_face` in file order, which refuses a
+/// face that would break the halfedge structure). Vertices keep the order of the file (STL:
+/// equal points merged, in order of first appearance). On failure, the message names the
+/// problem (the caller prefixes the file name).
+template <class Mesh>
+Failure read_mesh(const std::string& path, Mesh& mesh)
+{
+  const std::string ext = lowercase_extension(path);
+  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+    return detail::unsupported_extension(path);
+  Polygon_soup soup;
+  const Failure f = detail::read_soup(path, ext, soup);
+  if(f.failed())
+    return f;
+  return detail::build_mesh(soup, mesh);
 }
 
 /// The fallback default mesh: a curved, elliptic disk (a hexagonal lattice pushed onto
@@ -243,20 +271,14 @@ void make_curved_disk(Mesh& mesh)
     }
 }
 
-/// checks what the program needs before the library runs, with precise messages: faces, all
-/// triangles, one connected component.
+namespace detail {
+
+// Faces that are not triangles: how many, and the first.
 template <class Mesh>
-Failure check_mesh(const Mesh& mesh)
+Failure non_triangles(const Mesh& mesh)
 {
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
   Failure f;
-  if(faces(mesh).empty())
-  {
-    f.code = SMP::ERROR_EMPTY_MESH;
-    f.detail = "it has no faces (" + std::to_string(num_vertices(mesh)) + " vertices)";
-    return f;
-  }
-
   std::size_t non_triangles = 0, first_index = 0, first_degree = 0, index = 0;
   for(face_descriptor fd : faces(mesh))
   {
@@ -274,35 +296,56 @@ Failure check_mesh(const Mesh& mesh)
     f.detail = std::to_string(non_triangles) + " of its " + std::to_string(num_faces(mesh)) +
                " faces are not triangles (the first is face " + std::to_string(first_index) + ", with " +
                std::to_string(first_degree) + " vertices); triangulate it first";
+  }
+  return f;
+}
+
+// All the vertices of the faces at one point: no extent at all (every face has zero area).
+template <class Mesh>
+Failure no_extent(const Mesh& mesh)
+{
+  Failure f;
+  bool first = true, one_point = true;
+  typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>::value_type
+    p0(0., 0., 0.);
+  std::size_t used = 0;
+  for(auto v : vertices(mesh))
+  {
+    if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge())  // in no face
+      continue;
+    ++used;
+    if(first)
+      p0 = get(CGAL::vertex_point, mesh, v);
+    else if(get(CGAL::vertex_point, mesh, v) != p0)
+      one_point = false;
+    first = false;
+  }
+  if(one_point)
+    f.detail = "all " + std::to_string(used) + " vertices of its faces coincide (at " + exact(CGAL::to_double(p0.x())) +
+               " " + exact(CGAL::to_double(p0.y())) + " " + exact(CGAL::to_double(p0.z())) +
+               "): the mesh has no extent";
+  return f;
+}
+
+} // namespace detail
+
+/// checks what the program needs before the library runs, with precise messages: faces, all
+/// triangles, one connected component.
+template <class Mesh>
+Failure check_mesh(const Mesh& mesh)
+{
+  Failure f;
+  if(faces(mesh).empty())
+  {
+    f.code = SMP::ERROR_EMPTY_MESH;
+    f.detail = "it has no faces (" + std::to_string(num_vertices(mesh)) + " vertices)";
     return f;
   }
-
-  // all the vertices of the faces at one point: no extent at all (every face has zero area)
-  {
-    bool first = true, one_point = true;
-    typename boost::property_traits<typename boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>::value_type
-      p0(0., 0., 0.);
-    std::size_t used = 0;
-    for(auto v : vertices(mesh))
-    {
-      if(halfedge(v, mesh) == boost::graph_traits<Mesh>::null_halfedge())  // in no face
-        continue;
-      ++used;
-      if(first)
-        p0 = get(CGAL::vertex_point, mesh, v);
-      else if(get(CGAL::vertex_point, mesh, v) != p0)
-        one_point = false;
-      first = false;
-    }
-    if(one_point)
-    {
-      f.detail = "all " + std::to_string(used) + " vertices of its faces coincide (at " + exact(CGAL::to_double(p0.x())) +
-                 " " + exact(CGAL::to_double(p0.y())) + " " + exact(CGAL::to_double(p0.z())) +
-                 "): the mesh has no extent";
-      return f;
-    }
-  }
-
+  f = detail::non_triangles(mesh);
+  if(!f.failed())
+    f = detail::no_extent(mesh);
+  if(f.failed())
+    return f;
   auto component = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
   const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(mesh, component);
   if(components > 1)
@@ -310,9 +353,7 @@ Failure check_mesh(const Mesh& mesh)
     f.code = SMP::ERROR_NO_TOPOLOGICAL_DISC;
     f.detail = "it has " + std::to_string(components) +
                " connected components (the program needs one: extract it first)";
-    return f;
   }
-
   return f;
 }
 

@@ -47,7 +47,7 @@
 
 namespace mbp_cli {
 
-namespace output_internal {
+namespace output_detail {
 
 // The temporary files of this process, for the signal handler: a fixed array of paths (no
 // allocation in the handler), `count` of them in use.
@@ -140,7 +140,7 @@ inline const char* kind(const struct stat& st)
   return "not a regular file";
 }
 
-} // namespace output_internal
+} // namespace output_detail
 
 /// A file written through a buffer: text and numbers (std::to_chars), flushed in blocks.
 class Buffered_writer
@@ -258,57 +258,18 @@ public:
     Target t;
     t.path = path;
     t.what = what;
+    std::string error;
     if(exists)
-    {
-      if(S_ISLNK(st.st_mode))
-      {
-        struct stat pointed;
-        if(::stat(path.c_str(), &pointed) == 0)
-        {
-          const std::string same = same_as_input(pointed, usage, t, path);
-          if(!same.empty())
-            return same;
-        }
-        return cannot + "it is a symbolic link; the program does not replace a link by a file (give the path of"
-                        " the file it points to, or remove the link)";
-      }
-      if(!S_ISREG(st.st_mode))
-        return cannot + "it is " + output_internal::kind(st) + ", not a regular file";
-      const std::string same = same_as_input(st, usage, t, path);
-      if(!same.empty())
-        return same;
-      t.exists = true;
-      t.device = st.st_dev;
-      t.inode = st.st_ino;
-    }
+      error = check_existing_target(st, cannot, usage, t);
     else if(lstat_errno != ENOENT)
       return cannot + std::strerror(lstat_errno);
     else
-    {
-      // the directory must exist (the temporary file is created there)
-      const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-      struct stat d;
-      if(::stat(directory.c_str(), &d) != 0)
-        return cannot + "its directory '" + directory.string() + "': " + std::strerror(errno);
-      if(!S_ISDIR(d.st_mode))
-        return cannot + "'" + directory.string() + "' is not a directory";
-    }
-    t.canonical = canonical(path);
-    for(const Named& in : m_inputs)
-      if(!in.exists && !t.exists && t.canonical == canonical(in.path))
-      {
-        usage = true;
-        return what + " '" + path + "' names " + in.what + " '" + in.path + "'";
-      }
-    for(const Target& other : m_targets)
-      if((t.exists && other.exists && t.device == other.device && t.inode == other.inode) ||
-         t.canonical == other.canonical)
-      {
-        usage = true;
-        return what + " '" + path + "' and " + other.what + " '" + other.path + "' name the same file";
-      }
-    m_targets.push_back(t);
-    return std::string();
+      error = check_directory(target, cannot);
+    if(error.empty())
+      error = check_names(t, usage);
+    if(error.empty())
+      m_targets.push_back(t);
+    return error;
   }
 
   /// creates the temporary file of target `k` and returns its writer (null on failure: see
@@ -316,7 +277,7 @@ public:
   Buffered_writer* begin(std::size_t k)
   {
     namespace fs = std::filesystem;
-    output_internal::install_handlers();
+    output_detail::install_handlers();
     Target& t = m_targets[k];
     const fs::path directory = fs::path(t.path).parent_path();
     for(int attempt = 0; attempt < 100; ++attempt)
@@ -324,7 +285,7 @@ public:
       const std::string name = ".mbp-" + std::to_string(::getpid()) + "-" + std::to_string(k) +
                                (attempt > 0 ? "-" + std::to_string(attempt) : std::string()) + ".tmp";
       const std::string temporary = directory.empty() ? name : (directory / name).string();
-      output_internal::Signals_blocked blocked;
+      output_detail::Signals_blocked blocked;
       const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
       if(fd < 0 && errno == EEXIST)
         continue;
@@ -333,7 +294,7 @@ public:
         m_error = "cannot write " + t.what + " '" + t.path + "': " + std::strerror(errno);
         return nullptr;
       }
-      if(!output_internal::register_path(temporary))
+      if(!output_detail::register_path(temporary))
       {
         ::close(fd);
         ::unlink(temporary.c_str());
@@ -369,61 +330,8 @@ public:
   /// already renamed get their previous contents back (or are removed when there was none)
   bool publish()
   {
-    // hard links to the pre-existing targets, kept until every rename succeeded
-    for(std::size_t k = 0; k < m_targets.size(); ++k)
-    {
-      Target& t = m_targets[k];
-      if(!t.written)
-      {
-        m_error = "internal: " + t.what + " was not written";
-        return false;
-      }
-      struct stat st;
-      if(::lstat(t.path.c_str(), &st) != 0)
-        continue;
-      if(!S_ISREG(st.st_mode))  // changed since the check
-      {
-        m_error = "cannot write " + t.what + " '" + t.path + "': it is " + output_internal::kind(st) +
-                  ", not a regular file";
-        return false;
-      }
-      // a hard link where the file system has them, else the old file is renamed aside
-      // just before its replacement
-      const std::string backup = t.temporary.substr(0, t.temporary.size() - 4) + ".old";
-      output_internal::Signals_blocked blocked;
-      if(!output_internal::register_path(backup))
-      {
-        m_error = "cannot write " + t.what + " '" + t.path + "': too many files";
-        return false;
-      }
-      t.backup = backup;
-      t.backup_by_rename = (::link(t.path.c_str(), backup.c_str()) != 0);
-    }
-    for(std::size_t k = 0; k < m_targets.size(); ++k)
-    {
-      Target& t = m_targets[k];
-      const bool aside = !t.backup_by_rename || std::rename(t.path.c_str(), t.backup.c_str()) == 0;
-      if(!aside || std::rename(t.temporary.c_str(), t.path.c_str()) != 0)
-      {
-        m_error = "cannot write " + t.what + " '" + t.path + "': " + std::strerror(errno);
-        if(aside && t.backup_by_rename)
-          std::rename(t.backup.c_str(), t.path.c_str());
-        for(std::size_t j = 0; j < k; ++j)  // undo
-        {
-          Target& done = m_targets[j];
-          if(!done.backup.empty())
-          {
-            if(std::rename(done.backup.c_str(), done.path.c_str()) == 0)
-              forget(done.backup);
-          }
-          else
-            ::unlink(done.path.c_str());
-        }
-        return false;
-      }
-      forget(t.temporary);
-      t.published = true;
-    }
+    if(!back_up_targets() || !rename_targets())
+      return false;
     for(Target& t : m_targets)
       if(!t.backup.empty())
       {
@@ -453,6 +361,134 @@ private:
     bool written = false, published = false, backup_by_rename = false;
   };
 
+  // the checks of an existing target `t` (its lstat() `st`): a regular file that is no input
+  std::string check_existing_target(const struct stat& st, const std::string& cannot, bool& usage, Target& t) const
+  {
+    if(S_ISLNK(st.st_mode))
+    {
+      struct stat pointed;
+      if(::stat(t.path.c_str(), &pointed) == 0)
+      {
+        const std::string same = same_as_input(pointed, usage, t, t.path);
+        if(!same.empty())
+          return same;
+      }
+      return cannot + "it is a symbolic link; the program does not replace a link by a file (give the path of"
+                      " the file it points to, or remove the link)";
+    }
+    if(!S_ISREG(st.st_mode))
+      return cannot + "it is " + output_detail::kind(st) + ", not a regular file";
+    const std::string same = same_as_input(st, usage, t, t.path);
+    if(!same.empty())
+      return same;
+    t.exists = true;
+    t.device = st.st_dev;
+    t.inode = st.st_ino;
+    return std::string();
+  }
+
+  // the check of a target that does not exist: its directory must exist (the temporary file
+  // is created there)
+  static std::string check_directory(const std::filesystem::path& target, const std::string& cannot)
+  {
+    namespace fs = std::filesystem;
+    const fs::path directory = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    struct stat d;
+    if(::stat(directory.c_str(), &d) != 0)
+      return cannot + "its directory '" + directory.string() + "': " + std::strerror(errno);
+    if(!S_ISDIR(d.st_mode))
+      return cannot + "'" + directory.string() + "' is not a directory";
+    return std::string();
+  }
+
+  // the target `t` may not name an input that does not exist yet, nor another target
+  std::string check_names(Target& t, bool& usage) const
+  {
+    t.canonical = canonical(t.path);
+    for(const Named& in : m_inputs)
+      if(!in.exists && !t.exists && t.canonical == canonical(in.path))
+      {
+        usage = true;
+        return t.what + " '" + t.path + "' names " + in.what + " '" + in.path + "'";
+      }
+    for(const Target& other : m_targets)
+      if((t.exists && other.exists && t.device == other.device && t.inode == other.inode) ||
+         t.canonical == other.canonical)
+      {
+        usage = true;
+        return t.what + " '" + t.path + "' and " + other.what + " '" + other.path + "' name the same file";
+      }
+    return std::string();
+  }
+
+  // the first step of publish(): hard links to the pre-existing targets, kept until every
+  // rename succeeded
+  bool back_up_targets()
+  {
+    for(std::size_t k = 0; k < m_targets.size(); ++k)
+    {
+      Target& t = m_targets[k];
+      if(!t.written)
+      {
+        m_error = "internal: " + t.what + " was not written";
+        return false;
+      }
+      struct stat st;
+      if(::lstat(t.path.c_str(), &st) != 0)
+        continue;
+      if(!S_ISREG(st.st_mode))  // changed since the check
+      {
+        m_error = "cannot write " + t.what + " '" + t.path + "': it is " + output_detail::kind(st) +
+                  ", not a regular file";
+        return false;
+      }
+      // a hard link where the file system has them, else the old file is renamed aside
+      // just before its replacement
+      const std::string backup = t.temporary.substr(0, t.temporary.size() - 4) + ".old";
+      output_detail::Signals_blocked blocked;
+      if(!output_detail::register_path(backup))
+      {
+        m_error = "cannot write " + t.what + " '" + t.path + "': too many files";
+        return false;
+      }
+      t.backup = backup;
+      t.backup_by_rename = (::link(t.path.c_str(), backup.c_str()) != 0);
+    }
+    return true;
+  }
+
+  // the second step of publish(): every temporary file renamed to its target, or, on a
+  // failure, the targets renamed before put back
+  bool rename_targets()
+  {
+    for(std::size_t k = 0; k < m_targets.size(); ++k)
+    {
+      Target& t = m_targets[k];
+      const bool aside = !t.backup_by_rename || std::rename(t.path.c_str(), t.backup.c_str()) == 0;
+      if(!aside || std::rename(t.temporary.c_str(), t.path.c_str()) != 0)
+      {
+        m_error = "cannot write " + t.what + " '" + t.path + "': " + std::strerror(errno);
+        if(aside && t.backup_by_rename)
+          std::rename(t.backup.c_str(), t.path.c_str());
+        for(std::size_t j = 0; j < k; ++j)  // undo
+        {
+          Target& done = m_targets[j];
+          if(!done.backup.empty())
+          {
+            if(std::rename(done.backup.c_str(), done.path.c_str()) == 0)
+              forget(done.backup);
+          }
+          else
+            ::unlink(done.path.c_str());
+        }
+        return false;
+      }
+      forget(t.temporary);
+      t.published = true;
+    }
+    return true;
+  }
+
   // the absolute path with the links of its existing part resolved, '.' and '..' removed
   static std::filesystem::path canonical(const std::string& path)
   {
@@ -478,7 +514,7 @@ private:
 
   static void forget(std::string& path)
   {
-    output_internal::unregister_path(path);
+    output_detail::unregister_path(path);
     path.clear();
   }
 

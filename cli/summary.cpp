@@ -1,0 +1,86 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+// The one-line summary of a run and the texts of the border kept and the repair (summary.h).
+// No CGAL here but the library's report.
+
+#include "summary.h"
+
+namespace mbp_cli {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+std::string summary_of_mesh(const Run_facts& f)
+{
+  const Uv_layout& layout = f.result.layout;
+  const Seams& seams = f.result.seams;
+  std::string s = f.mesh_name + ": V " + std::to_string(layout.vertices.size()) + ", F " +
+                  std::to_string(layout.faces.size());
+  if(seams.cut)
+    s += std::string(seams.automatic ? " | automatic seams " : " | seams ") + std::to_string(seams.edges) +
+         " edges, " + (seams.automatic ? std::to_string(seams.cones.size()) + " cones, " : std::string()) +
+         std::to_string(layout.uv.size()) + " UVs";
+  s += " | border " + std::to_string(f.result.border_vertices) + " vertices, length " +
+       rounded(f.result.border_length);
+  if(layout.has_center)
+    s += " | center " + std::to_string(layout.center_vertex) + " (" + f.options.center_name() + ")" +
+         " | distances " + f.options.distance;
+  return s;
+}
+
+std::string summary_of_quality(const Quality& q)
+{
+  return " | angle distortion " + rounded(q.angle_distortion) + ", L2 stretch " + rounded(q.l2_stretch) +
+         ", quasi-conformal mean " + rounded(q.quasi_conformal_mean) + ", flipped faces " +
+         std::to_string(q.flipped_faces);
+}
+
+std::string candidate_kind(const SMP::Border_candidate& c, const std::string& distance)
+{
+  return c.family == SMP::CIRCLE      ? std::string("circle")
+         : c.family == SMP::CONFORMAL ? std::string("conformal")
+                                      : "measured:" + distance;
+}
+
+std::string kept_border(const SMP::Parameterization_report& report, const std::string& distance)
+{
+  const std::size_t n = report.border_candidates.size();
+  const std::string tried = " (" + std::to_string(n) + (n == 1 ? " layout" : " layouts") + " tried)";
+  if(report.chosen_candidate < 0)
+    return "none valid" + tried;
+  const SMP::Border_candidate& c = report.border_candidates[static_cast<std::size_t>(report.chosen_candidate)];
+  const std::string kind = candidate_kind(c, distance);
+  return kind + (kind == "circle" || c.blend == 0. ? std::string() : " t " + rounded(c.blend, 3)) +
+         (c.mean_value_interior ? ", mean value interior" : "") + tried;
+}
+
+std::string repair_text(const SMP::Parameterization_report& report, bool enabled)
+{
+  if(report.repaired)
+    return "repaired " + std::to_string(report.flipped_faces_before_repair) + " flipped faces: blend " +
+           rounded(report.blend, 3) + (report.mean_value_interior ? ", mean value interior" : "");
+  return enabled ? "no repair needed" : "repair off";
+}
+
+std::string summary_line(const Run_facts& f)
+{
+  const Options& o = f.options;
+  const SMP::Parameterization_report& r = f.result.report;
+  return summary_of_mesh(f) + " | border " + border_name(o.border) + ": " + kept_border(r, o.distance) +
+         " | seconds: preparation " + rounded(r.preparation_seconds, 3) + ", center " +
+         rounded(r.center_seconds, 3) + ", distances " + rounded(r.distance_seconds, 3) + ", border map " +
+         rounded(r.border_map_seconds, 3) + ", conformal border " + rounded(r.conformal_border_seconds, 3) +
+         ", layouts " + rounded(r.interior_seconds, 3) + ", total " + rounded(r.total_seconds, 3) + " | " +
+         solver_name(o.solver) + ": " + std::to_string(r.statistics.factorizations) + " factorizations, " +
+         std::to_string(r.statistics.back_substitutions) + " back-substitutions" +
+         summary_of_quality(f.result.quality) + " | " + repair_text(r, o.repair) + " | wrote " + o.output +
+         (o.svg.empty() ? std::string() : ", " + o.svg) + "\n";
+}
+
+} // namespace mbp_cli

@@ -1,0 +1,181 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_ATLAS_CHARTS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_ATLAS_CHARTS_H
+
+/// \file Atlas_charts.h
+/// The charts of a texture atlas: each connected component of a repaired triangle set
+/// flattened with the package's parameterizers, split where a chart is not one-to-one.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/compute_disk_seams.h>
+#include <CGAL/Surface_mesh_parameterization/main_border.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/charts.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Seam_mesh.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+typedef CGAL::Simple_cartesian<double>                        Atlas_kernel;
+typedef CGAL::Surface_mesh<Atlas_kernel::Point_3>             Atlas_surface;
+typedef Atlas_surface::Vertex_index                           Atlas_vertex;
+typedef Atlas_surface::Face_index                             Atlas_face;
+
+// A face subset as a Surface_mesh: vertex i is the local (fan) vertex i, face i the subset's
+// face i; `corner_ids` gives the local vertex of each corner of each face.
+struct Subset_surface
+{
+  Atlas_surface mesh;
+  std::vector<std::array<int, 3> > corner_ids;
+  bool built = false;
+};
+
+inline Subset_surface make_subset_surface(const Atlas_triangles& t, const std::vector<std::size_t>& faces)
+{
+  Subset_surface s;
+  std::vector<int> vertex_of;
+  s.corner_ids = fan_vertex_ids(t, faces, subset_neighbors(t, faces), vertex_of);
+  for(int v : vertex_of)
+  {
+    const Eigen::Vector3d& p = t.points[std::size_t(v)];
+    s.mesh.add_vertex(Atlas_kernel::Point_3(p.x(), p.y(), p.z()));
+  }
+  s.built = true;
+  for(const std::array<int, 3>& c : s.corner_ids)
+    if(s.mesh.add_face(Atlas_vertex(Atlas_surface::size_type(c[0])), Atlas_vertex(Atlas_surface::size_type(c[1])),
+                       Atlas_vertex(Atlas_surface::size_type(c[2]))) == Atlas_surface::null_face())
+      s.built = false;  // not a manifold surface: the caller splits the subset
+  return s;
+}
+
+// Whether a surface is a topological disk: one border loop and Euler characteristic 1.
+inline bool is_topological_disk(const Atlas_surface& m)
+{
+  std::size_t loops = 0;
+  auto seen = get(CGAL::dynamic_halfedge_property_t<bool>(), m);
+  for(auto h : halfedges(m))
+    put(seen, h, false);
+  for(auto h : halfedges(m))
+    if(is_border(h, m) && !get(seen, h))
+    {
+      ++loops;
+      for(auto b : halfedges_around_face(h, m))
+        put(seen, b, true);
+    }
+  const long chi = long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m));
+  return loops == 1 && chi == 1;
+}
+
+// The corner UVs of face i of a subset from a UV map on the vertices of `graph` (the surface
+// or its seam mesh); `vertex_at` gives, for halfedge h of face i, its target in `graph`.
+template <class Graph, class UVmap, class FaceOf, class LocalVertex>
+void corners_from_uv(const Graph& graph, const Subset_surface& s, UVmap uvmap, FaceOf face_of, LocalVertex local_vertex,
+                     Atlas_chart& chart)
+{
+  chart.corners.resize(s.corner_ids.size());
+  for(std::size_t i = 0; i < s.corner_ids.size(); ++i)
+    for(auto h : halfedges_around_face(halfedge(face_of(i), graph), graph))
+    {
+      const std::size_t k = std::size_t(std::find(s.corner_ids[i].begin(), s.corner_ids[i].end(), local_vertex(h)) -
+                                        s.corner_ids[i].begin());
+      const auto& uv = get(uvmap, target(h, graph));
+      if(k < 3)
+        chart.corners[i][k] = Eigen::Vector2d(uv.x(), uv.y());
+    }
+}
+
+// The disk flattened by the complete parameterizer (automatic border).
+inline bool flatten_disk(Subset_surface& s, Atlas_chart& chart)
+{
+  auto uv = s.mesh.add_property_map<Atlas_vertex, Atlas_kernel::Point_2>("v:atlas_uv").first;
+  const auto bhd = main_border(s.mesh).first;
+  if(parameterize(s.mesh, Conformal_parameterizer_3<Atlas_surface>(), bhd, uv) != OK)
+    return false;
+  chart.flattening = DISK_CHART;
+  corners_from_uv(s.mesh, s, uv, [](std::size_t i) { return Atlas_face(Atlas_surface::size_type(i)); },
+                  [&s](Atlas_surface::Halfedge_index h) { return int(target(h, s.mesh)); }, chart);
+  return true;
+}
+
+// Any other surface cut open along automatic seams into a disk, then flattened.
+inline bool flatten_with_seams(Subset_surface& s, Atlas_chart& chart)
+{
+  typedef Atlas_surface::Property_map<Atlas_surface::Edge_index, bool>  Seam_edges;
+  typedef Atlas_surface::Property_map<Atlas_vertex, bool>               Seam_vertices;
+  typedef CGAL::Seam_mesh<Atlas_surface, Seam_edges, Seam_vertices>     Seam_mesh;
+  Seam_edges edges_map = s.mesh.add_property_map<Atlas_surface::Edge_index, bool>("e:atlas_seam", false).first;
+  Seam_vertices vertices_map = s.mesh.add_property_map<Atlas_vertex, bool>("v:atlas_seam", false).first;
+  Disk_seams_report seams;
+  if(compute_disk_seams(s.mesh, edges_map, vertices_map, Disk_seams_options(), &seams) != OK)
+    return false;
+  Seam_mesh seam_mesh(s.mesh, edges_map, vertices_map);
+  seam_mesh.set_seam_edges_number(seams.number_of_seam_edges);
+  auto uv = get(CGAL::dynamic_vertex_property_t<Atlas_kernel::Point_2>(), seam_mesh);
+  const auto bhd = main_border(seam_mesh).first;
+  if(parameterize(seam_mesh, Conformal_parameterizer_3<Seam_mesh>(), bhd, uv) != OK)
+    return false;
+  chart.flattening = SEAMED_CHART;
+  typedef typename boost::graph_traits<Seam_mesh>::halfedge_descriptor Seam_halfedge;
+  corners_from_uv(seam_mesh, s, uv, [](std::size_t i) { return Atlas_face(Atlas_surface::size_type(i)); },
+                  [&s](Seam_halfedge h) { return int(target(h.tmhd, s.mesh)); }, chart);
+  return true;
+}
+
+// One chart of a connected face subset when the parameterizers (or, failing them, the
+// isometric unfolding) give a one-to-one map; false when the subset must be split.
+inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size_t>& faces, Atlas_chart& chart)
+{
+  Subset_surface s = make_subset_surface(t, faces);
+  chart.faces = faces;
+  if(s.built && (is_topological_disk(s.mesh) ? flatten_disk(s, chart) : flatten_with_seams(s, chart)) &&
+     is_one_to_one_chart(t, chart))
+    return true;
+  chart = unfold_isometrically(t, faces);
+  return is_one_to_one_chart(t, chart);
+}
+
+// The charts of a face subset: each connected part one chart if it can be, otherwise split in
+// two, recursively (a single triangle always unfolds).
+inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
+                             std::vector<Atlas_chart>& charts)
+{
+  for(const std::vector<std::size_t>& part : edge_components(t, faces))
+  {
+    Atlas_chart chart;
+    if(flatten_subset(t, part, chart) || part.size() == 1)
+    {
+      chart_area_figures(t, chart);
+      chart_angle_distortion(t, chart);
+      charts.push_back(std::move(chart));
+      continue;
+    }
+    for(const std::vector<std::size_t>& half : split_in_two(t, part))
+      flatten_face_set(t, half, charts);
+  }
+}
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_ATLAS_CHARTS_H

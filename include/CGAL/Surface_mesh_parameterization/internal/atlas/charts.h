@@ -1,0 +1,351 @@
+// Copyright (c) 2026  The measured boundary parameterization authors.
+// All rights reserved.
+//
+// This file is part of the measured boundary parameterization package for CGAL.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s)     : The measured boundary parameterization authors
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_ATLAS_CHARTS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_ATLAS_CHARTS_H
+
+// The charts of an atlas on an indexed triangle set (the repaired mesh): a chart is a set of
+// faces with a UV for each face corner. What is decided here needs no parameterizer: the
+// face sets (components, and their split in two when a chart is not one-to-one), the
+// isometric unfolding of a small chart along a spanning tree of its faces, the validity of a
+// chart (no flipped triangle, no two overlapping triangles) and its distortion figures.
+
+#include <CGAL/Surface_mesh_parameterization/internal/core/angle_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_adjacency.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// An indexed triangle set: the repaired mesh as the atlas sees it.
+struct Atlas_triangles
+{
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Face_indices> faces;
+};
+
+// How a chart was flattened.
+enum Chart_flattening { DISK_CHART, SEAMED_CHART, UNFOLDED_CHART };
+
+// A chart: faces of the triangle set and the UV of each face corner (corner k of a face is
+// its vertex faces[f][k]).
+struct Atlas_chart
+{
+  std::vector<std::size_t> faces;
+  std::vector<std::array<Eigen::Vector2d, 3> > corners;
+  Chart_flattening flattening = DISK_CHART;
+  double angle_distortion = 0.;  // the paper's, over the chart cut open along its seams
+  double area_spread = 0.;       // area-weighted mean |log(UV area / 3D area)| after one scale
+  double area_3d = 0., area_uv = 0.;
+};
+
+// The faces of `faces` (a subset of the triangle set) with the faces of the subset across each
+// edge, in local indices; -1 on a border of the subset.
+inline std::vector<std::array<int, 3> > subset_neighbors(const Atlas_triangles& t, const std::vector<std::size_t>& faces)
+{
+  std::vector<Face_indices> local(faces.size());
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    local[i] = t.faces[faces[i]];
+  const Triangle_adjacency adjacency(t.points.size(), local);
+  std::vector<std::array<int, 3> > neighbors(faces.size());
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    for(int k = 0; k < 3; ++k)
+      neighbors[i][std::size_t(k)] = adjacency.neighbor(i, k);
+  return neighbors;
+}
+
+// The connected components of a face subset (through shared edges), each as face indices.
+inline std::vector<std::vector<std::size_t> > edge_components(const Atlas_triangles& t, const std::vector<std::size_t>& faces)
+{
+  const std::vector<std::array<int, 3> > neighbors = subset_neighbors(t, faces);
+  std::vector<int> component(faces.size(), -1);
+  std::vector<std::vector<std::size_t> > result;
+  for(std::size_t seed = 0; seed < faces.size(); ++seed)
+  {
+    if(component[seed] >= 0)
+      continue;
+    result.emplace_back();
+    std::vector<std::size_t> stack(1, seed);
+    component[seed] = int(result.size() - 1);
+    while(!stack.empty())
+    {
+      const std::size_t f = stack.back();
+      stack.pop_back();
+      result.back().push_back(faces[f]);
+      for(int g : neighbors[f])
+        if(g >= 0 && component[std::size_t(g)] < 0)
+        {
+          component[std::size_t(g)] = component[seed];
+          stack.push_back(std::size_t(g));
+        }
+    }
+  }
+  return result;
+}
+
+// The vertices of a face subset as a manifold surface sees them: one local id per fan of
+// faces around a vertex (corners of one vertex in two faces that share an edge through it are
+// the same local vertex), so that a vertex pinched in the subset becomes several. Returns the
+// local id of each face corner; `vertex_of` gets the vertex of each local id.
+inline std::vector<std::array<int, 3> > fan_vertex_ids(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
+                                                      const std::vector<std::array<int, 3> >& neighbors,
+                                                      std::vector<int>& vertex_of)
+{
+  std::vector<std::array<int, 3> > ids(faces.size(), {{-1, -1, -1}});
+  vertex_of.clear();
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    for(int k = 0; k < 3; ++k)
+    {
+      if(ids[f][std::size_t(k)] >= 0)
+        continue;
+      const int v = t.faces[faces[f]][std::size_t(k)], id = int(vertex_of.size());
+      vertex_of.push_back(v);
+      std::vector<std::pair<std::size_t, int> > stack(1, {f, k});  // corners of v in this fan
+      ids[f][std::size_t(k)] = id;
+      while(!stack.empty())
+      {
+        const std::pair<std::size_t, int> c = stack.back();
+        stack.pop_back();
+        for(int e : {(c.second + 1) % 3, (c.second + 2) % 3})  // the two edges through the corner
+        {
+          const int g = neighbors[c.first][std::size_t(e)];
+          if(g < 0)
+            continue;
+          const Face_indices& vg = t.faces[faces[std::size_t(g)]];
+          const int kg = int(std::find(vg.begin(), vg.end(), v) - vg.begin());
+          if(kg < 3 && ids[std::size_t(g)][std::size_t(kg)] < 0)
+          {
+            ids[std::size_t(g)][std::size_t(kg)] = id;
+            stack.emplace_back(std::size_t(g), kg);
+          }
+        }
+      }
+    }
+  return ids;
+}
+
+// Breadth-first distances (in faces) from `seed` over the subset.
+inline std::vector<int> face_distances(const std::vector<std::array<int, 3> >& neighbors, std::size_t seed)
+{
+  std::vector<int> distance(neighbors.size(), -1);
+  std::vector<std::size_t> queue(1, seed);
+  distance[seed] = 0;
+  for(std::size_t q = 0; q < queue.size(); ++q)
+    for(int g : neighbors[queue[q]])
+      if(g >= 0 && distance[std::size_t(g)] < 0)
+      {
+        distance[std::size_t(g)] = distance[queue[q]] + 1;
+        queue.push_back(std::size_t(g));
+      }
+  return distance;
+}
+
+// A connected face subset split in two: the faces nearer (in faces, ties to the first) to one
+// of two far apart faces (the farthest from the first face, and the farthest from that one).
+// Each part is then split into its connected components by the caller.
+inline std::array<std::vector<std::size_t>, 2> split_in_two(const Atlas_triangles& t, const std::vector<std::size_t>& faces)
+{
+  const std::vector<std::array<int, 3> > neighbors = subset_neighbors(t, faces);
+  auto farthest = [](const std::vector<int>& d) {
+    return std::size_t(std::max_element(d.begin(), d.end()) - d.begin());
+  };
+  const std::size_t a = farthest(face_distances(neighbors, 0));
+  const std::vector<int> from_a = face_distances(neighbors, a);
+  const std::vector<int> from_b = face_distances(neighbors, farthest(from_a));
+  std::array<std::vector<std::size_t>, 2> parts;
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    parts[(from_b[i] < from_a[i]) ? 1 : 0].push_back(faces[i]);
+  if(parts[1].empty() && faces.size() > 1)  // a single face at distance 0 from both
+  {
+    parts[1].push_back(parts[0].back());
+    parts[0].pop_back();
+  }
+  return parts;
+}
+
+// The UV triangle of a 3D triangle with its edge (p0, p1) along +u: an isometry.
+inline std::array<Eigen::Vector2d, 3> isometric_triangle(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                                                         const Eigen::Vector3d& p2)
+{
+  const Eigen::Vector3d e = p1 - p0, g = p2 - p0;
+  const double l = e.norm();
+  const double x = (l > 0.) ? e.dot(g) / l : 0.;
+  const double y = (l > 0.) ? e.cross(g).norm() / l : 0.;
+  return {{Eigen::Vector2d(0., 0.), Eigen::Vector2d(l, 0.), Eigen::Vector2d(x, y)}};
+}
+
+// Places corner `k` of a triangle with corners k+1, k+2 known in UV: the 3D triangle moved
+// by the similarity (a rotation and translation, of scale 1 when the UV edge keeps its 3D
+// length) that takes its edge (k+1, k+2) onto the UV edge, on the left of it.
+inline Eigen::Vector2d place_third_corner(const std::array<Eigen::Vector3d, 3>& p, int k, const Eigen::Vector2d& a,
+                                          const Eigen::Vector2d& b)
+{
+  const std::size_t i = std::size_t((k + 1) % 3), j = std::size_t((k + 2) % 3);
+  const std::array<Eigen::Vector2d, 3> flat = isometric_triangle(p[i], p[j], p[std::size_t(k)]);
+  const Eigen::Vector2d d = b - a;
+  const double l = d.norm();
+  if(!(l > 0.) || !(flat[1].x() > 0.))
+    return a;
+  const Eigen::Vector2d u = d / l, v(-u.y(), u.x());
+  return a + (flat[2].x() * u + flat[2].y() * v) * (l / flat[1].x());
+}
+
+// Face g laid out across the edge opposite corner k of the placed face f.
+inline void unfold_across(const Atlas_triangles& t, const std::vector<std::size_t>& faces, std::size_t f, int k,
+                          std::size_t g, const std::array<Eigen::Vector3d, 3>& pg, Atlas_chart& chart)
+{
+  const Face_indices& vf = t.faces[faces[f]];
+  const Face_indices& vg = t.faces[faces[g]];
+  const int a = vf[std::size_t((k + 1) % 3)], b = vf[std::size_t((k + 2) % 3)];
+  int kg = 0;  // the corner of g off the shared edge
+  while(vg[std::size_t(kg)] == a || vg[std::size_t(kg)] == b)
+    ++kg;
+  // g holds the edge as (b, a): its corners kg+1 and kg+2 are b and a
+  const Eigen::Vector2d& ua = chart.corners[f][std::size_t((k + 1) % 3)];
+  const Eigen::Vector2d& ub = chart.corners[f][std::size_t((k + 2) % 3)];
+  chart.corners[g][std::size_t((kg + 1) % 3)] = ub;
+  chart.corners[g][std::size_t((kg + 2) % 3)] = ua;
+  chart.corners[g][std::size_t(kg)] = place_third_corner(pg, kg, ub, ua);
+}
+
+// The isometric unfolding of a face subset along a breadth-first spanning tree of its faces:
+// each face is laid out across the edge it shares with its parent. Consistent (every vertex
+// placed once per face) and exact in angles and lengths; it may overlap itself, which the
+// caller checks.
+inline Atlas_chart unfold_isometrically(const Atlas_triangles& t, const std::vector<std::size_t>& faces)
+{
+  const std::vector<std::array<int, 3> > neighbors = subset_neighbors(t, faces);
+  Atlas_chart chart;
+  chart.flattening = UNFOLDED_CHART;
+  chart.faces = faces;
+  chart.corners.resize(faces.size());
+  std::vector<bool> placed(faces.size(), false);
+  auto points = [&](std::size_t f) {
+    const Face_indices& v = t.faces[faces[f]];
+    return std::array<Eigen::Vector3d, 3>{{t.points[std::size_t(v[0])], t.points[std::size_t(v[1])], t.points[std::size_t(v[2])]}};
+  };
+  for(std::size_t seed = 0; seed < faces.size(); ++seed)
+  {
+    if(placed[seed])
+      continue;
+    const std::array<Eigen::Vector3d, 3> p = points(seed);
+    chart.corners[seed] = isometric_triangle(p[0], p[1], p[2]);
+    placed[seed] = true;
+    std::vector<std::size_t> queue(1, seed);
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      for(int k = 0; k < 3; ++k)
+      {
+        const int g = neighbors[queue[q]][std::size_t(k)];
+        if(g < 0 || placed[std::size_t(g)])
+          continue;
+        unfold_across(t, faces, queue[q], k, std::size_t(g), points(std::size_t(g)), chart);
+        placed[std::size_t(g)] = true;
+        queue.push_back(std::size_t(g));
+      }
+  }
+  return chart;
+}
+
+// Whether a chart is one-to-one: every UV triangle counterclockwise, and no two overlapping.
+// Two corners are the same UV vertex when they have the same vertex and the same UV.
+inline bool is_one_to_one_chart(const Atlas_triangles& t, const Atlas_chart& chart)
+{
+  std::map<std::pair<int, std::pair<double, double> >, std::size_t> ids;
+  std::vector<std::array<std::size_t, 3> > vertices(chart.faces.size());
+  std::vector<std::array<Validity_kernel::Point_2, 3> > corners(chart.faces.size());
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+  {
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector2d& uv = chart.corners[i][k];
+      const auto key = std::make_pair(t.faces[chart.faces[i]][k], std::make_pair(uv.x(), uv.y()));
+      vertices[i][k] = ids.emplace(key, ids.size()).first->second;
+      corners[i][k] = exact_point(uv);
+    }
+    if(CGAL::orientation(corners[i][0], corners[i][1], corners[i][2]) != CGAL::LEFT_TURN)
+      return false;
+  }
+  return !any_uv_triangles_overlap(vertices, corners);
+}
+
+// The area spread (area-weighted mean |log(UV area / 3D area)| after the UV areas are scaled
+// to the 3D total) and the areas of a chart.
+inline void chart_area_figures(const Atlas_triangles& t, Atlas_chart& chart)
+{
+  std::vector<double> area3(chart.faces.size()), area2(chart.faces.size());
+  chart.area_3d = chart.area_uv = 0.;
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+  {
+    const Face_indices& v = t.faces[chart.faces[i]];
+    area3[i] = 0.5 * (t.points[std::size_t(v[1])] - t.points[std::size_t(v[0])])
+                       .cross(t.points[std::size_t(v[2])] - t.points[std::size_t(v[0])]).norm();
+    const Eigen::Vector2d e = chart.corners[i][1] - chart.corners[i][0], g = chart.corners[i][2] - chart.corners[i][0];
+    area2[i] = 0.5 * std::abs(e.x() * g.y() - e.y() * g.x());
+    chart.area_3d += area3[i];
+    chart.area_uv += area2[i];
+  }
+  chart.area_spread = 0.;
+  if(!(chart.area_3d > 0.) || !(chart.area_uv > 0.))
+    return;
+  const double log_scale = std::log(chart.area_3d / chart.area_uv);
+  double sum = 0.;
+  for(std::size_t i = 0; i < area3.size(); ++i)
+    if(area3[i] > 0. && area2[i] > 0.)
+      sum += area3[i] * std::abs(std::log(area2[i] / area3[i]) + log_scale);
+  chart.area_spread = sum / chart.area_3d;
+}
+
+// The paper's angle distortion of a chart over the chart cut open along its seams: a vertex is
+// a border vertex of the chart when one of its UV vertices lies on the chart's border.
+inline void chart_angle_distortion(const Atlas_triangles& t, Atlas_chart& chart)
+{
+  std::map<std::pair<int, std::pair<double, double> >, int> ids;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Face_indices> faces(chart.faces.size());
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const int v = t.faces[chart.faces[i]][k];
+      const auto key = std::make_pair(v, std::make_pair(chart.corners[i][k].x(), chart.corners[i][k].y()));
+      const auto it = ids.emplace(key, int(points.size())).first;
+      if(it->second == int(points.size()))
+        points.push_back(t.points[std::size_t(v)]);
+      faces[i][k] = it->second;
+    }
+  const Triangle_adjacency adjacency(points.size(), faces);
+  std::vector<bool> on_border(points.size(), false);
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    for(int k = 0; k < 3; ++k)
+      if(adjacency.neighbor(i, k) < 0)
+        on_border[std::size_t(faces[i][std::size_t((k + 1) % 3)])] = on_border[std::size_t(faces[i][std::size_t((k + 2) % 3)])] = true;
+  std::vector<Eigen::Vector2d> uv(points.size());
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    for(std::size_t k = 0; k < 3; ++k)
+      uv[std::size_t(faces[i][k])] = chart.corners[i][k];
+  chart.angle_distortion = Angle_distortion(points, faces, on_border, points.size())(uv);
+}
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_ATLAS_CHARTS_H
