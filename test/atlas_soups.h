@@ -105,7 +105,7 @@ inline Soup with_reversed_faces(Soup s, std::size_t first, std::size_t step)
 }
 
 // An edge with three faces: three triangles on the edge (0, 1).
-inline Soup edge_with_three_faces()
+inline Soup edge_with_three_faces_soup()
 {
   Soup s;
   s.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{.5, 1., 0.}}, {{.5, -1., 0.}}, {{.5, 0., 1.}}};
@@ -115,7 +115,7 @@ inline Soup edge_with_three_faces()
 
 // A(0) B(1) C(2) M(3) E(4): the sliver A M B (M the middle of AB) along the edge AB of the
 // face A B C; the only link between A B C and the two faces below it.
-inline Soup zero_area_face_on_an_edge()
+inline Soup zero_area_face_on_an_edge_soup()
 {
   Soup s;
   s.points = {{{0., 0., 0.}}, {{2., 0., 0.}}, {{1., 1., 0.}}, {{1., 0., 0.}}, {{1., -1., 0.}}};
@@ -148,7 +148,8 @@ inline Soup moebius_strip_soup(int n)
   }
   for(std::size_t i = 0; i + 1 < std::size_t(n); ++i)
     s.faces.push_back({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
-  s.faces.push_back({2 * (n - 1), 1, 0, 2 * (n - 1) + 1});
+  const std::size_t last = 2 * std::size_t(n - 1);
+  s.faces.push_back({last, 1, 0, last + 1});
   return s;
 }
 

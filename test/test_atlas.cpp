@@ -249,7 +249,7 @@ BOOST_AUTO_TEST_CASE(vertex_shared_by_two_cones)
 
 BOOST_AUTO_TEST_CASE(edge_with_three_faces)
 {
-  const Soup s = mbp_test::edge_with_three_faces();
+  const Soup s = mbp_test::edge_with_three_faces_soup();
   const Atlas_output a = check_soup(s);
   BOOST_CHECK_EQUAL(a.report.repair.non_manifold_edges, 1u);
 }
@@ -275,7 +275,7 @@ BOOST_AUTO_TEST_CASE(duplicated_face)
 
 BOOST_AUTO_TEST_CASE(zero_area_face)
 {
-  const Soup s = mbp_test::zero_area_face_on_an_edge();
+  const Soup s = mbp_test::zero_area_face_on_an_edge_soup();
   const Atlas_output a = check_soup(s);
   BOOST_CHECK_EQUAL(a.report.repair.zero_area_triangles, 1u);
   // the sliver (polygon 3) gets a zero-area UV triangle, inside the square

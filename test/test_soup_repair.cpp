@@ -495,7 +495,7 @@ BOOST_AUTO_TEST_CASE(vertex_shared_by_two_cones)
 
 BOOST_AUTO_TEST_CASE(edge_with_three_faces)
 {
-  Soup s = edge_with_three_faces();
+  Soup s = edge_with_three_faces_soup();
   Repaired r;
   const Corner_counts n = repair(s, r);
   SMP::Soup_repair_report want = plain_report(s, 9, 3, 3);
@@ -552,7 +552,7 @@ BOOST_AUTO_TEST_CASE(zero_area_face_on_the_edge_of_a_face_kept)
   // A(0) B(1) C(2) M(3) E(4): the sliver A M B (M the middle of AB) lies along the edge AB
   // of the face A B C, across its longest edge. It is the only link between A B C and the two
   // faces below A M B: removed, it leaves A and B pinched, split into two components.
-  Soup s = zero_area_face_on_an_edge();
+  Soup s = zero_area_face_on_an_edge_soup();
   Repaired r;
   const Corner_counts n = repair(s, r);
   SMP::Soup_repair_report want = plain_report(s, 7, 3, 2);
