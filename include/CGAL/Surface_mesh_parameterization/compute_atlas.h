@@ -246,8 +246,8 @@ Error_code compute_atlas_of_polygon_soup(const PointRange& points, const Polygon
   const Error_code status = internal::make_atlas(points, polygons, options, input, layout, r);
   if(status != OK)
     return status;
-  corner_uvs.resize(input.corner_offset.size());
-  polygon_charts.resize(input.corner_offset.size());
+  corner_uvs.resize(r.repair.input_polygons);
+  polygon_charts.resize(r.repair.input_polygons);
   std::size_t p = 0;
   for(const auto& polygon : polygons)
   {
