@@ -43,8 +43,9 @@
 // "timeout"; a non-zero exit or a signal is reported as such, never measured.
 //
 // Measures, the same for both outputs. The OBJ is read (v, vt, f with v/vt corners, g);
-// polygons are fanned into triangles (corner 0, i, i+1) for every measure below; a polygon with
-// a corner without vt gives no triangle. 3D positions and UVs are compared exactly (as doubles).
+// polygons are cut into triangles by ear clipping in UV (a fan from corner 0 would fold over a
+// concave corner of a simple UV polygon) for every measure below; a polygon with a corner
+// without vt gives no triangle. 3D positions and UVs are compared exactly (as doubles).
 // A triangle has zero 3D area when its area <= 1e-12 * (its longest edge)^2, and zero UV area
 // likewise in UV.
 //   UV corners   ours: corners of the output polygons that have a vt, where output polygon i
@@ -490,7 +491,55 @@ std::vector<std::uint32_t> weld(const std::vector<std::array<double, N> >& value
 
 bool inside_unit_square(const P2& uv) { return uv[0] >= 0. && uv[0] <= 1. && uv[1] >= 0. && uv[1] <= 1.; }
 
-// Counts the corners of polygon `f` and fans it into triangles when every corner has a UV.
+// Twice the signed area of the UV triangle of corners a, b, c.
+double uv_cross(const Obj& obj, std::size_t a, std::size_t b, std::size_t c)
+{
+  const P2 &p = obj.vt[obj.corner_vt[a]], &q = obj.vt[obj.corner_vt[b]], &r = obj.vt[obj.corner_vt[c]];
+  return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+}
+
+// The triangles of the polygon of corners [first, end) by ear clipping in UV: a simple UV
+// polygon (as a one-to-one chart gives, convex or not) gets triangles that do not overlap,
+// where a fan from corner 0 would fold over a concave corner. The fan finishes a polygon
+// without an ear (not simple in UV).
+std::vector<std::array<std::size_t, 3> > triangulate_in_uv(const Obj& obj, std::size_t first, std::size_t end)
+{
+  std::vector<std::size_t> ring;
+  double orientation = 0.;
+  for(std::size_t c = first; c < end; ++c)
+  {
+    ring.push_back(c);
+    orientation += c + 2 < end ? uv_cross(obj, first, c + 1, c + 2) : 0.;
+  }
+  std::vector<std::array<std::size_t, 3> > triangles;
+  while(ring.size() > 3)
+  {
+    const std::size_t n = ring.size();
+    std::size_t ear = n;
+    for(std::size_t i = 0; i < n && ear == n; ++i)
+    {
+      const std::size_t a = ring[(i + n - 1) % n], b = ring[i], c = ring[(i + 1) % n];
+      bool empty = uv_cross(obj, a, b, c) * orientation > 0.;
+      for(std::size_t k = 0; k < n && empty; ++k)
+      {
+        const std::size_t d = ring[k];
+        if(d != a && d != b && d != c)
+          empty = !(uv_cross(obj, a, b, d) * orientation >= 0. && uv_cross(obj, b, c, d) * orientation >= 0. &&
+                    uv_cross(obj, c, a, d) * orientation >= 0.);
+      }
+      ear = empty ? i : n;
+    }
+    if(ear == n)
+      break;
+    triangles.push_back({ring[(ear + n - 1) % n], ring[ear], ring[(ear + 1) % n]});
+    ring.erase(ring.begin() + std::ptrdiff_t(ear));
+  }
+  for(std::size_t i = 1; i + 1 < ring.size(); ++i)
+    triangles.push_back({ring[0], ring[i], ring[i + 1]});
+  return triangles;
+}
+
+// Counts the corners of polygon `f` and triangulates it (in UV) when every corner has a UV.
 void add_polygon(const Obj& obj, std::size_t f, const std::vector<std::uint32_t>& pid,
                  const std::vector<std::uint32_t>& uid, Atlas& atlas)
 {
@@ -506,9 +555,8 @@ void add_polygon(const Obj& obj, std::size_t f, const std::vector<std::uint32_t>
   atlas.corners_uv += with_uv;
   if(with_uv != end - first)
     return;
-  for(std::size_t c = first + 1; c + 1 < end; ++c)
+  for(const std::array<std::size_t, 3>& t : triangulate_in_uv(obj, first, end))
   {
-    const std::array<std::size_t, 3> t = {first, c, c + 1};
     atlas.p.push_back({pid[obj.corner_v[t[0]]], pid[obj.corner_v[t[1]]], pid[obj.corner_v[t[2]]]});
     atlas.u.push_back({uid[obj.corner_vt[t[0]]], uid[obj.corner_vt[t[1]]], uid[obj.corner_vt[t[2]]]});
   }
