@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -94,30 +95,16 @@ inline Error_code pack_charts(const Atlas_options& options, Atlas_layout& layout
   return OK;
 }
 
-// The area-weighted mean of |log(UV area / 3D area)| over all faces after one global scale.
+// The area-weighted mean of |log(UV area / 3D area)| over all faces after one global scale:
+// the area spread of the whole atlas taken as one chart.
 inline double atlas_area_spread(const Atlas_triangles& t, const Atlas_layout& layout)
 {
-  std::vector<double> area3(t.faces.size()), area2(t.faces.size());
-  double total3 = 0., total2 = 0.;
-  for(std::size_t f = 0; f < t.faces.size(); ++f)
-  {
-    const Face_indices& v = t.faces[f];
-    area3[f] = 0.5 * (t.points[std::size_t(v[1])] - t.points[std::size_t(v[0])])
-                         .cross(t.points[std::size_t(v[2])] - t.points[std::size_t(v[0])]).norm();
-    const std::array<Eigen::Vector2d, 3>& uv = layout.face_uv[f];
-    const Eigen::Vector2d e = uv[1] - uv[0], g = uv[2] - uv[0];
-    area2[f] = 0.5 * std::abs(e.x() * g.y() - e.y() * g.x());
-    total3 += area3[f];
-    total2 += area2[f];
-  }
-  if(!(total3 > 0.) || !(total2 > 0.))
-    return 0.;
-  const double log_scale = std::log(total3 / total2);
-  double sum = 0.;
-  for(std::size_t f = 0; f < area3.size(); ++f)
-    if(area3[f] > 0. && area2[f] > 0.)
-      sum += area3[f] * std::abs(std::log(area2[f] / area3[f]) + log_scale);
-  return sum / total3;
+  Atlas_chart all;
+  all.faces.resize(t.faces.size());
+  std::iota(all.faces.begin(), all.faces.end(), std::size_t(0));
+  all.corners = layout.face_uv;
+  chart_area_figures(t, all);
+  return all.area_spread;
 }
 
 // The report's charts and totals.

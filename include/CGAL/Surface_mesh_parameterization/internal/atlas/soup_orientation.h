@@ -21,6 +21,7 @@
 // whose visitor tells what it did.
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/soup_cleaning.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/union_find.h>
 #include <CGAL/Surface_mesh_parameterization/Soup_repair_report.h>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -133,27 +134,6 @@ void orient_with_cgal(Working_soup<Point_3>& soup, Soup_repair_report& report)
     soup.point_origin[copy.second] = soup.point_origin[copy.first];
   count_copies(soup, record, report);
 }
-
-// Items in sets (path halving; the smallest item of a set is its root).
-struct Union_find
-{
-  std::vector<std::size_t> parent;
-
-  explicit Union_find(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t(0)); }
-  std::size_t find(std::size_t x)
-  {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b)
-  {
-    a = find(a);
-    b = find(b);
-    if(a != b)
-      parent[(std::max)(a, b)] = (std::min)(a, b);
-  }
-};
 
 // Items in sets with a parity each, relative to the root of its set (the smallest item): the
 // polygons of a piece, parity 1 for those to reverse so that they turn as the first one does.

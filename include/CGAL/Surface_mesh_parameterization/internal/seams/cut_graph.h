@@ -31,6 +31,8 @@
 //
 // The shortening of a cut (shorten_cut()) is in cut_shortening.h.
 
+#include <CGAL/Surface_mesh_parameterization/internal/core/union_find.h>
+
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -181,31 +183,6 @@ inline void mark_tree_path(const Indexed_surface& s, const Shortest_path_tree& t
   }
 }
 
-// Union-find with path halving.
-class Disjoint_sets
-{
-public:
-  explicit Disjoint_sets(std::size_t n) : m_parent(n) { std::iota(m_parent.begin(), m_parent.end(), std::size_t(0)); }
-  std::size_t find(std::size_t i)
-  {
-    while(m_parent[i] != i)
-      i = m_parent[i] = m_parent[m_parent[i]];
-    return i;
-  }
-  bool unite(std::size_t a, std::size_t b)
-  {
-    a = find(a);
-    b = find(b);
-    if(a == b)
-      return false;
-    m_parent[(std::max)(a, b)] = (std::min)(a, b);
-    return true;
-  }
-
-private:
-  std::vector<std::size_t> m_parent;
-};
-
 // The shortest path tree of the greedy system: from the whole border (with border), or from
 // `root` (closed surface), over the interior edges.
 inline void system_tree(const Indexed_surface& s, int root, Shortest_path_tree& tree)
@@ -268,7 +245,7 @@ inline int greedy_system_of_cuts(const Indexed_surface& s, int root, std::vector
 {
   Shortest_path_tree tree;
   system_tree(s, root, tree);
-  Disjoint_sets faces(static_cast<std::size_t>(s.number_of_faces()));
+  Union_find faces(static_cast<std::size_t>(s.number_of_faces()));
   int loops = 0;
   for(const std::pair<double, int>& d : weighted_dual_edges(s, tree))
   {
@@ -400,7 +377,7 @@ inline bool is_disk_cut(const Indexed_surface& s, const std::vector<char>& cut, 
 {
   if(s.faces.empty())
     return false;
-  Disjoint_sets pieces(static_cast<std::size_t>(s.number_of_faces()));
+  Union_find pieces(static_cast<std::size_t>(s.number_of_faces()));
   long seams = 0, components = s.number_of_faces();
   for(int e = 0; e < s.number_of_edges(); ++e)
   {

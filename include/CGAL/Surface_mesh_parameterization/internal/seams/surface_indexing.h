@@ -18,6 +18,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Disk_seams_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/mesh_indexer.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/union_find.h>
 #include <CGAL/Surface_mesh_parameterization/internal/seams/cut_graph.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -40,7 +41,7 @@ namespace internal {
 // The number of connected components of the faces of an indexed surface.
 inline std::size_t number_of_face_components(const Indexed_surface& s)
 {
-  Disjoint_sets pieces(s.faces.size());
+  Union_find pieces(s.faces.size());
   std::size_t components = s.faces.size();
   for(const std::array<int, 2>& ef : s.edge_faces)
     if(ef[1] >= 0 && pieces.unite(static_cast<std::size_t>(ef[0]), static_cast<std::size_t>(ef[1])))
