@@ -11,11 +11,12 @@
 // library. The atlas (the default mode): the polygon soup as read goes to
 // compute_atlas_of_polygon_soup(), which repairs it, makes its charts and packs them; its
 // UVs per polygon corner and chart ids come back in the input's numbering.
-// A single chart (--single-chart): the mesh is a CGAL::Surface_mesh; a mesh that is not a disk is cut along seams (a
-// CGAL::Seam_mesh over it) and parameterized with Conformal_parameterizer_3, for the solver
-// traits of --solver and the border policy of --border (Automatic_border, Conformal_border,
-// Measured_border or Circular_border, chosen at run time among the instantiated policies); the
-// helpers mesh_input.h and seam_selection.h read and check the mesh and the seams.
+// A single chart (--single-chart): the mesh is a CGAL::Surface_mesh; a mesh that is not a
+// disk is cut along seams (a CGAL::Seam_mesh over it) and parameterized with
+// Conformal_parameterizer_3, for the solver traits of --solver and the border policy of
+// --border (Automatic_border, Conformal_border, Measured_border or Circular_border, chosen at
+// run time among the instantiated policies); the helpers mesh_input.h and seam_selection.h
+// read and check the mesh and the seams.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -568,24 +569,30 @@ int scale_exponent_of(const std::vector<std::array<double, 3> >& points)
 }
 
 // The area of polygon `i` of the soup in 3D (the norm of its vector area) and in UV (the
-// absolute value of its shoelace area), its points multiplied by 2^exponent.
+// absolute value of its shoelace area), its points multiplied by 2^exponent; both from its
+// first corner, so that a polygon far from the origin loses no precision.
 std::array<double, 2> polygon_areas(const mbp_cli::Polygon_soup& soup, const std::vector<std::array<double, 2> >& uv,
                                     std::size_t i, int exponent)
 {
   const std::size_t begin = soup.face_begin(i), n = soup.face_size(i);
+  if(n < 3)
+    return {0., 0.};
+  const std::array<double, 3>& o = soup.points[soup.corners[begin]];
+  auto from_first = [&](std::size_t k) {
+    const std::array<double, 3>& p = soup.points[soup.corners[begin + k]];
+    return std::array<double, 3>{std::ldexp(p[0] - o[0], exponent), std::ldexp(p[1] - o[1], exponent),
+                                 std::ldexp(p[2] - o[2], exponent)};
+  };
   std::array<double, 3> vector_area = {0., 0., 0.};
   double uv_area = 0.;
-  for(std::size_t k = 0; k < n; ++k)
+  for(std::size_t k = 1; k + 1 < n; ++k)
   {
-    const std::size_t a = begin + k, b = begin + (k + 1) % n;
-    const std::array<double, 3>& p = soup.points[soup.corners[a]];
-    const std::array<double, 3>& q = soup.points[soup.corners[b]];
-    const double px = std::ldexp(p[0], exponent), py = std::ldexp(p[1], exponent), pz = std::ldexp(p[2], exponent);
-    const double qx = std::ldexp(q[0], exponent), qy = std::ldexp(q[1], exponent), qz = std::ldexp(q[2], exponent);
-    vector_area[0] += py * qz - pz * qy;
-    vector_area[1] += pz * qx - px * qz;
-    vector_area[2] += px * qy - py * qx;
-    uv_area += uv[a][0] * uv[b][1] - uv[a][1] * uv[b][0];
+    const std::array<double, 3> p = from_first(k), q = from_first(k + 1);
+    vector_area[0] += p[1] * q[2] - p[2] * q[1];
+    vector_area[1] += p[2] * q[0] - p[0] * q[2];
+    vector_area[2] += p[0] * q[1] - p[1] * q[0];
+    const std::array<double, 2>& a = uv[begin], &b = uv[begin + k], &c = uv[begin + k + 1];
+    uv_area += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
   }
   return {0.5 * std::sqrt(vector_area[0] * vector_area[0] + vector_area[1] * vector_area[1] +
                           vector_area[2] * vector_area[2]),
@@ -626,6 +633,41 @@ Failure explain_atlas_failure(SMP::Error_code code, const mbp_cli::Polygon_soup&
   return f;
 }
 
+// The polygons of the soup that have corners (the library takes polygons of 1 corner or more).
+std::vector<std::vector<std::size_t> > polygons_with_corners(const mbp_cli::Polygon_soup& soup)
+{
+  std::vector<std::vector<std::size_t> > polygons;
+  polygons.reserve(soup.number_of_faces());
+  for(std::size_t i = 0; i < soup.number_of_faces(); ++i)
+    if(soup.face_size(i) > 0)
+      polygons.emplace_back(soup.corners.begin() + std::ptrdiff_t(soup.face_begin(i)),
+                            soup.corners.begin() + std::ptrdiff_t(soup.face_end[i]));
+  return polygons;
+}
+
+// The library's UVs and charts of the polygons with corners, given to the input's polygons:
+// one UV per corner of the soup, the chart of every polygon (none for those without corners).
+Failure take_atlas(const std::vector<std::vector<Point_2> >& corner_uvs, const std::vector<std::size_t>& charts,
+                   mbp_cli::Atlas_result& a)
+{
+  const mbp_cli::Polygon_soup& soup = a.soup;
+  a.uv.reserve(soup.corners.size());
+  a.polygon_chart.assign(soup.number_of_faces(), mbp_cli::Atlas_result::no_chart);
+  for(std::size_t i = 0, p = 0; i < soup.number_of_faces(); ++i)
+  {
+    if(soup.face_size(i) == 0)
+      continue;
+    for(const Point_2& q : corner_uvs[p])
+    {
+      if(!std::isfinite(q.x()) || !std::isfinite(q.y()))
+        return Failure{SMP::OK, "the library gave a non-finite UV to a corner of polygon " + std::to_string(i)};
+      a.uv.push_back({q.x(), q.y()});
+    }
+    a.polygon_chart[i] = charts[p++];
+  }
+  return Failure();
+}
+
 // The input's lengths and areas in the report: the points were multiplied by 2^exponent.
 void unscale_report(SMP::Atlas_report& report, int exponent)
 {
@@ -658,7 +700,8 @@ struct Run::Impl
 };
 
 // The atlas of the soup: the library's compute_atlas_of_polygon_soup() on its polygons with
-// corners, and the distortion of every polygon.
+// corners (its points scaled by a power of two when their magnitude needs it), then the UVs
+// and charts in the input's numbering and the distortion of every polygon.
 Run_error Run::Impl::make_atlas(const Options& options)
 {
   Atlas_result& a = result.atlas;
@@ -670,48 +713,23 @@ Run_error Run::Impl::make_atlas(const Options& options)
   if(exponent != 0)
     for(const std::array<double, 3>& p : soup.points)
       scaled.push_back({std::ldexp(p[0], exponent), std::ldexp(p[1], exponent), std::ldexp(p[2], exponent)});
-  const std::vector<std::array<double, 3> >& points = exponent != 0 ? scaled : soup.points;
-  // the polygons with corners (the library takes polygons of 1 corner or more)
-  std::vector<std::vector<std::size_t> > polygons;
-  polygons.reserve(soup.number_of_faces());
-  for(std::size_t i = 0; i < soup.number_of_faces(); ++i)
-    if(soup.face_size(i) > 0)
-      polygons.emplace_back(soup.corners.begin() + std::ptrdiff_t(soup.face_begin(i)),
-                            soup.corners.begin() + std::ptrdiff_t(soup.face_end[i]));
+  std::vector<std::vector<std::size_t> > polygons = polygons_with_corners(soup);
   a.empty_polygons = soup.number_of_faces() - polygons.size();
   if(polygons.empty())
-  {
-    Failure f;
-    f.code = SMP::ERROR_EMPTY_MESH;
-    f.detail = "it has no faces (" + std::to_string(soup.points.size()) + " vertices)";
-    return fail(f);
-  }
+    return fail(Failure{SMP::ERROR_EMPTY_MESH, "it has no faces (" + std::to_string(soup.points.size()) + " vertices)"});
   SMP::Atlas_options atlas_options;
   atlas_options.resolution = options.resolution;
   atlas_options.gutter = options.gutter;
   std::vector<std::vector<Point_2> > corner_uvs;
   std::vector<std::size_t> charts;
-  const SMP::Error_code status =
-    SMP::compute_atlas_of_polygon_soup(points, polygons, corner_uvs, charts, atlas_options, &a.report);
+  const SMP::Error_code status = SMP::compute_atlas_of_polygon_soup(exponent != 0 ? scaled : soup.points, polygons,
+                                                                    corner_uvs, charts, atlas_options, &a.report);
   if(status != SMP::OK)
     return fail(explain_atlas_failure(status, soup, polygons.size(), options));
   std::vector<std::vector<std::size_t> >().swap(polygons);
-
-  // back to the input's polygons
-  a.uv.reserve(soup.corners.size());
-  a.polygon_chart.assign(soup.number_of_faces(), Atlas_result::no_chart);
-  for(std::size_t i = 0, p = 0; i < soup.number_of_faces(); ++i)
-  {
-    if(soup.face_size(i) == 0)
-      continue;
-    for(const Point_2& q : corner_uvs[p])
-    {
-      if(!std::isfinite(q.x()) || !std::isfinite(q.y()))
-        return fail(Failure{SMP::OK, "the library gave a non-finite UV to a corner of polygon " + std::to_string(i)});
-      a.uv.push_back({q.x(), q.y()});
-    }
-    a.polygon_chart[i] = charts[p++];
-  }
+  const Failure f = take_atlas(corner_uvs, charts, a);
+  if(f.failed())
+    return fail(f);
   // the area distortion of every polygon after the one scale of the atlas
   const double uv_per_3d_area = a.report.texel_density * a.report.texel_density;
   a.polygon_area_distortion.assign(soup.number_of_faces(), 0.);

@@ -2521,6 +2521,29 @@ BOOST_AUTO_TEST_CASE(atlas_options_and_failures)
     check_atlas(read_atlas_obj(scratch.work / "out.obj"), j, two);
     BOOST_TEST(contains(Scratch::read_text(scratch.work / "out.obj"), "(256 texels, gutter 4)"));
   }
+  // coordinates so large (or small) that squared lengths overflow (or underflow): an atlas all
+  // the same, the OBJ with the input's coordinates, the texel density in the input's unit
+  {
+    Scratch scratch;
+    scratch.write("unit.off", exact_off_text(two));
+    const Run u = scratch.run({"unit.off", "unit.obj", "--json"});
+    BOOST_REQUIRE_EQUAL(u.code, 0);
+    const double density = parse_json(u.out).get<double>("texel_density");
+    for(const double scale : {1e300, 1e-300})
+      BOOST_TEST_CONTEXT("scale " << scale)
+      {
+        mbp_test::Soup scaled = two;
+        for(auto& p : scaled.points)
+          for(double& x : p)
+            x *= scale;
+        scratch.write("scaled.off", exact_off_text(scaled));
+        const Run r = scratch.run({"scaled.off", "scaled.obj", "--json"});
+        BOOST_REQUIRE_EQUAL(r.code, 0);
+        const boost::property_tree::ptree j = parse_json(r.out);
+        check_atlas(read_atlas_obj(scratch.work / "scaled.obj"), j, scaled);
+        BOOST_TEST(std::abs(j.get<double>("texel_density") * scale / density - 1.) < 0.02);  // the packing's search
+      }
+  }
   // command-line errors: exit 2, the message, no file
   const std::vector<std::pair<std::vector<std::string>, std::string> > usage = {
     {{"two.off", "--atlas", "--border=measured"}, "option --atlas cannot be combined with --border"},
