@@ -80,6 +80,7 @@ struct Options
 {
   std::string meshes = MBP_ATLAS_MESH_DIR;
   std::string xatlas = MBP_XATLAS_PROGRAM;
+  std::string cache;  // a folder that keeps xatlas's outputs between runs
   SMP::internal::Atlas_packing_options packing;
   bool nest = true;
   double nest_seconds = 120.;
@@ -96,7 +97,7 @@ struct Xatlas_run
   std::map<std::string, std::string> fields;  // charts, atlas, utilization, seconds, ...
   int width = 0;
   int height = 0;
-  std::vector<SMP::internal::Atlas_chart> charts;
+  std::vector<SMP::internal::Chart_to_pack> charts;
   double uv_texels = 0.;  // exact UV area of its triangles, in texels
 };
 
@@ -175,7 +176,7 @@ void group_charts(const std::vector<Eigen::Vector3d>& v, const std::vector<Eigen
     const std::size_t c = chart_of_root.emplace(root, chart_of_root.size()).first->second;
     if(c == run.charts.size())
       run.charts.emplace_back();
-    SMP::internal::Atlas_chart& chart = run.charts[c];
+    SMP::internal::Chart_to_pack& chart = run.charts[c];
     SMP::internal::Face_indices t;
     for(int k = 0; k < 3; ++k)
     {
@@ -191,7 +192,7 @@ void group_charts(const std::vector<Eigen::Vector3d>& v, const std::vector<Eigen
     chart.triangles.push_back(t);
     chart.area_3d += triangle_area_3(v[face[0]], v[face[1]], v[face[2]]);
   }
-  for(const SMP::internal::Atlas_chart& chart : run.charts)
+  for(const SMP::internal::Chart_to_pack& chart : run.charts)
     run.uv_texels += SMP::internal::triangle_set_area(chart.uv, chart.triangles);
 }
 
@@ -202,7 +203,8 @@ Xatlas_run run_xatlas(const Options& options, const fs::path& mesh, const fs::pa
   const fs::path obj = work / (mesh.stem().string() + ".obj"), log = work / (mesh.stem().string() + ".txt");
   const std::string command = "'" + options.xatlas + "' '" + mesh.string() + "' '" + obj.string() + "' > '" +
                               log.string() + "' 2>&1";
-  if(std::system(command.c_str()) != 0)
+  const bool cached = !options.cache.empty() && fs::exists(obj) && fs::exists(log);
+  if(!cached && std::system(command.c_str()) != 0)
     return run;
   std::ifstream in(log);
   std::string word;
@@ -238,7 +240,7 @@ struct Raster_figures
   std::string check;
 };
 
-Raster_figures run_raster(const Options& options, const std::vector<SMP::internal::Atlas_chart>& charts)
+Raster_figures run_raster(const Options& options, const std::vector<SMP::internal::Chart_to_pack>& charts)
 {
   Raster_figures figures;
   std::vector<double> seconds;
@@ -251,7 +253,7 @@ Raster_figures run_raster(const Options& options, const std::vector<SMP::interna
   if(options.check && figures.packing.status == SMP::OK)
   {
     std::vector<std::vector<SMP::internal::Face_indices> > faces;
-    for(const SMP::internal::Atlas_chart& chart : charts)
+    for(const SMP::internal::Chart_to_pack& chart : charts)
       faces.push_back(chart.triangles);
     const double gutter = double(options.packing.gutter) / double(options.packing.resolution);
     const mbp_atlas_check::Atlas_check c = mbp_atlas_check::check_atlas(figures.packing.uv, faces, gutter);
@@ -276,7 +278,7 @@ struct Nest_figures
 constexpr double nest_units = 1000.;  // libnest2d's integer units per texel
 
 // The charts' normalized convex hulls, clockwise (libnest2d's orientation).
-std::vector<std::vector<Eigen::Vector2d> > normalized_hulls(const std::vector<SMP::internal::Atlas_chart>& charts,
+std::vector<std::vector<Eigen::Vector2d> > normalized_hulls(const std::vector<SMP::internal::Chart_to_pack>& charts,
                                                             const std::vector<SMP::internal::Packing_chart>& packed)
 {
   std::vector<std::vector<Eigen::Vector2d> > hulls(charts.size());
@@ -339,7 +341,7 @@ bool nest_at_scale(const std::vector<std::vector<Eigen::Vector2d> >& hulls, doub
 }
 
 // The search of packing.h's search_scale(), with libnest2d as the feasibility test.
-Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::Atlas_chart>& charts)
+Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::Chart_to_pack>& charts)
 {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&start] {
@@ -347,7 +349,7 @@ Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::A
   };
   std::vector<SMP::internal::Packing_chart> packed;
   double area = 0.;
-  for(const SMP::internal::Atlas_chart& chart : charts)
+  for(const SMP::internal::Chart_to_pack& chart : charts)
   {
     packed.push_back(SMP::internal::normalize_chart(chart));
     area += packed.back().degenerate ? 0. : chart.area_3d;
@@ -362,7 +364,7 @@ Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::A
     (nest_at_scale(hulls, scale, options) ? low : high) = scale;
     figures.stopped = elapsed() > options.nest_seconds;
   }
-  while(low > 0. && high > low * (1. + options.packing.scale_tolerance) && !figures.stopped)
+  while(low > 0. && high > low * (1. + options.packing.density_tolerance) && !figures.stopped)
   {
     const double scale = std::sqrt(low * high);
     ++figures.attempts;
@@ -396,6 +398,8 @@ bool parse(int argc, char** argv, Options& options)
       options.nest_seconds = std::stod(value());
     else if(a.rfind("--placer=", 0) == 0)
       options.placer = value();
+    else if(a.rfind("--cache=", 0) == 0)
+      options.cache = value();
     else if(a == "--check")
       options.check = true;
     else if(a.rfind("--runs=", 0) == 0)
@@ -429,7 +433,7 @@ void print_header(const Options& options)
   std::cout << "resolution " << options.packing.resolution << ", gutter " << options.packing.gutter
             << " texels; libnest2d placer " << options.placer << "\n\n"
             << "| mesh | faces | charts | xatlas util (printed / exact / square) | xatlas s | raster util | "
-               "raster s | attempts | libnest2d util | libnest2d s |"
+               "raster s (raster + placement) | attempts | libnest2d util | libnest2d s |"
             << (options.check ? " check (overlaps/close/outside) |" : "") << "\n"
             << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|" << (options.check ? "---|" : "") << "\n";
 }
@@ -450,7 +454,8 @@ void measure_mesh(const Options& options, const fs::path& mesh, const fs::path& 
             << " / " << std::setprecision(4) << x.uv_texels / (w * h) << " / " << x.uv_texels / (side * side) << " | "
             << std::setprecision(3) << std::stod(x.fields.at("seconds")) << " | " << std::setprecision(4)
             << r.packing.utilization << (r.packing.status == SMP::OK ? "" : " (failed)") << " | "
-            << std::setprecision(3) << r.seconds << " | " << r.packing.statistics.attempts << " | ";
+            << std::setprecision(3) << r.seconds << " (" << r.packing.statistics.raster_seconds << " + "
+            << r.packing.statistics.placement_seconds << ") | " << r.packing.statistics.attempts << " | ";
 #ifdef MBP_HAS_LIBNEST2D
   if(options.nest)
   {
@@ -483,12 +488,14 @@ int main(int argc, char** argv)
               << ") not found\n";
     return 1;
   }
-  const fs::path work = fs::temp_directory_path() / ("mbp_atlas_packing_" + std::to_string(::getpid()));
+  const fs::path work = !options.cache.empty() ? fs::path(options.cache)
+                        : fs::temp_directory_path() / ("mbp_atlas_packing_" + std::to_string(::getpid()));
   fs::create_directories(work);
   print_header(options);
   for(const fs::path& mesh : mesh_files(options))
     measure_mesh(options, mesh, work);
   std::error_code ec;
-  fs::remove_all(work, ec);
+  if(options.cache.empty())
+    fs::remove_all(work, ec);
   return 0;
 }

@@ -57,6 +57,22 @@ inline int lowest_bit(std::uint64_t w)
 #endif
 }
 
+// The number of leading zero bits of a non-zero word.
+inline int leading_zeros(std::uint64_t w)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_clzll(w);
+#else
+  int b = 0;
+  while(!(w >> 63))
+  {
+    w <<= 1;
+    ++b;
+  }
+  return b;
+#endif
+}
+
 // A view of a raster stored in a shared word buffer (no allocation per raster).
 struct Raster_view
 {
