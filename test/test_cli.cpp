@@ -2518,8 +2518,15 @@ BOOST_AUTO_TEST_CASE(atlas_options_and_failures)
     const boost::property_tree::ptree j = parse_json(r.out);
     BOOST_TEST(j.get<int>("resolution") == 256);
     BOOST_TEST(j.get<int>("gutter") == 4);
-    check_atlas(read_atlas_obj(scratch.work / "out.obj"), j, two);
+    const Atlas_obj obj = read_atlas_obj(scratch.work / "out.obj");
+    check_atlas(obj, j, two);
     BOOST_TEST(contains(Scratch::read_text(scratch.work / "out.obj"), "(256 texels, gutter 4)"));
+    // the gutter kept to the border of the square: 4 texels of 1/256
+    std::size_t in_gutter = 0;
+    for(const auto& q : obj.vt)
+      for(double x : q)
+        in_gutter += (x >= 4. / 256. - 1e-9 && x <= 1. - 4. / 256. + 1e-9) ? 0 : 1;
+    BOOST_TEST(in_gutter == 0u, in_gutter << " UV coordinates within 4 texels of the border");
   }
   // coordinates so large (or small) that squared lengths overflow (or underflow): an atlas all
   // the same, the OBJ with the input's coordinates, the texel density in the input's unit
