@@ -8,7 +8,8 @@
 // Author(s)     : The measured boundary parameterization authors
 
 // The JSON output (json_output.h): the document of a failed run, and the sections of the
-// document of a successful run. No CGAL here but the library's report.
+// document of a successful run, an atlas or a single chart. No CGAL here but the library's
+// reports.
 
 #include "json_output.h"
 #include "summary.h"
@@ -201,6 +202,99 @@ void write_statistics(Json_writer& j, const SMP::Solver_statistics& s)
      .end_object();
 }
 
+// ---------------------------------------------------------------------------- the atlas
+
+// the repairs of the input: repair (every count of the library's Soup_repair_report)
+void write_soup_repair(Json_writer& j, const SMP::Soup_repair_report& r)
+{
+  j.begin_object("repair")
+     .member("input_points", r.input_points)
+     .member("input_polygons", r.input_polygons)
+     .member("input_corners", r.input_corners)
+     .member("merged_points", r.merged_points)
+     .member("degenerate_polygons", r.degenerate_polygons)
+     .member("polygons_with_repeated_points", r.polygons_with_repeated_points)
+     .member("duplicate_polygons", r.duplicate_polygons)
+     .member("non_manifold_edges", r.non_manifold_edges)
+     .member("pinched_vertices", r.pinched_vertices)
+     .member("non_orientable_components", r.non_orientable_components)
+     .member("vertices_split_non_manifold", r.vertices_split_non_manifold)
+     .member("vertices_split_non_orientable", r.vertices_split_non_orientable)
+     .member("reoriented_polygons", r.reoriented_polygons)
+     .member("detached_polygons", r.detached_polygons)
+     .member("triangulated_polygons", r.triangulated_polygons)
+     .member("triangles_from_polygons", r.triangles_from_polygons)
+     .member("zero_area_triangles", r.zero_area_triangles)
+     .member("vertices_split_after_removal", r.vertices_split_after_removal)
+     .member("vertices", r.vertices)
+     .member("faces", r.faces)
+     .member("components", r.components)
+     .member("collapsed_corners", r.collapsed_corners)
+     .member("isolated_corners", r.isolated_corners)
+     .end_object();
+}
+
+// the charts: chart_count, and charts, one object per chart (by chart id)
+void write_charts(Json_writer& j, const SMP::Atlas_report& r)
+{
+  j.member("chart_count", r.charts.size());
+  j.begin_array("charts", false);
+  for(const SMP::Atlas_chart_report& c : r.charts)
+    j.begin_object()
+       .member("faces", c.faces)
+       .member("flattening", flattening_name(c.flattening))
+       .member("area_3d", c.area_3d)
+       .member("area_uv", c.area_uv)
+       .member("angle_distortion", c.angle_distortion)
+       .member("area_spread", c.area_spread)
+       .end_object();
+  j.end_array();
+}
+
+// the document of an atlas
+std::string json_atlas_document(const Run_facts& f)
+{
+  const Options& o = f.options;
+  const Atlas_result& a = f.result.atlas;
+  const SMP::Atlas_report& r = a.report;
+  Json_writer j;
+  j.begin_object();
+  j.member("mode", mode_name(o.mode));
+  if(f.generated)
+    j.null_member("input");
+  else
+    j.member("input", o.input);
+  j.member("generated_mesh", f.generated);
+  j.member("mesh", f.mesh_name);
+  j.member("output", o.output);
+  if(o.svg.empty())
+    j.null_member("svg");
+  else
+    j.member("svg", o.svg);
+  j.member("resolution", std::size_t(o.resolution));
+  j.member("gutter", std::size_t(o.gutter));
+  j.member("points", a.soup.points.size());
+  j.member("polygons", a.soup.number_of_faces());
+  j.member("corners", a.soup.corners.size());
+  j.member("empty_polygons", a.empty_polygons);
+  write_soup_repair(j, r.repair);
+  write_charts(j, r);
+  j.member("utilization", r.utilization);
+  j.member("texel_density", r.texel_density);
+  j.member("angle_distortion", r.angle_distortion);
+  j.member("area_spread", r.area_spread);
+  j.begin_object("times")
+     .member("read", f.read_seconds)
+     .member("repair", r.repair_seconds)
+     .member("charts", r.chart_seconds)
+     .member("packing", r.packing_seconds)
+     .member("total", r.total_seconds)
+     .member("write", f.write_seconds)
+     .end_object();
+  j.end_object();
+  return j.text();
+}
+
 } // namespace
 
 std::string json_failure(const std::string& message, int status, int error_code)
@@ -217,9 +311,12 @@ std::string json_failure(const std::string& message, int status, int error_code)
 
 std::string json_document(const Run_facts& f)
 {
+  if(f.options.mode == Mode::atlas)
+    return json_atlas_document(f);
   const SMP::Parameterization_report& r = f.result.report;
   Json_writer j;
   j.begin_object();
+  j.member("mode", mode_name(f.options.mode));
   write_command_line(j, f);
   write_border_choice(j, f);
   write_mesh(j, f);

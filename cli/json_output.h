@@ -26,7 +26,9 @@ namespace mbp_cli {
 /// `error_code` 0)
 std::string json_failure(const std::string& message, int status, int error_code);
 
-/// the document of a successful run
+/// the document of a successful run: "mode" ("atlas" or "single-chart") first, then for the
+/// atlas the input, the repairs, the charts, the utilization, the distortion and the times;
+/// for a single chart the border, the mesh, the times, the solver's work and the distortion
 std::string json_document(const Run_facts& facts);
 
 } // namespace mbp_cli

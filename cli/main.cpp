@@ -7,28 +7,34 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// The command-line program of the package: flattens a disk-like triangle mesh with the
-// measured boundary parameterization of "Measured boundary parameterization based on
-// Poisson's equation" (Conformal_parameterizer_3 with the border policy of --border: the
-// paper's Measured_border, or by default Automatic_border) and writes the UV layout.
+// The command-line program of the package. By default (--atlas) it makes a packed texture
+// atlas of any mesh file: the file is read as a polygon soup, which the library repairs, cuts
+// into charts (one per connected component, split where its map would not be one-to-one) and
+// packs into the unit square (compute_atlas_of_polygon_soup()); every corner of every input
+// polygon gets a UV. With --single-chart (implied by the options of that mode) it flattens a
+// disk-like triangle mesh with the measured boundary parameterization of "Measured boundary
+// parameterization based on Poisson's equation" (Conformal_parameterizer_3 with the border
+// policy of --border: the paper's Measured_border, or by default Automatic_border).
 //
-//   measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]
+//   measured_parameterization [INPUT] [OUTPUT.obj] [--atlas] [--resolution=N] [--gutter=N]
+//                             [--output=FILE] [--svg=FILE] [--json] [--help]
+//   measured_parameterization [INPUT] [OUTPUT.obj] --single-chart [--seams=FILE.selection.txt]
 //                             [--center=poisson|geodesic[:METHOD]|vertex:N]
 //                             [--distance=poisson|METHOD|straightest] [--border=auto|conformal|measured|circle]
-//                             [--solver=cholmod|cholmod-nd|ldlt] [--svg=FILE] [--json] [--no-repair] [--help]
+//                             [--solver=cholmod|cholmod-nd|ldlt] [--svg=FILE] [--json] [--no-repair]
+//                             [--write-seams=FILE.selection.txt]
 //
 // Reads OFF, OBJ, PLY or STL (default: a real mesh of the project's data, or a generated
-// curved disk when that file is missing), maps the longest border, and writes an OBJ with
-// one UV per vertex (default: <input file stem>_uv.obj), optionally an SVG picture, and a
-// one-line summary or a JSON object with the times, the solver work and the distortion.
-// With --seams, the mesh (closed, or open with handles) is first cut along the seam edges
-// of a CGAL selection file: the program parameterizes the CGAL::Seam_mesh, and the OBJ gets
-// one UV per vertex of the seam mesh (one per side of a seam). Without --seams, a mesh that is
-// not a disk (closed, with holes or handles) is cut along automatic seams (compute_disk_seams);
+// curved disk when that file is missing) and writes an OBJ (default: <input file stem>_uv.obj):
+// for the atlas the input's points and polygons in their order with one UV per polygon corner
+// and a group per chart; for a single chart one UV per vertex (with seams, one per side of a
+// seam). Optionally an SVG picture, and a one-line summary or a JSON object with the times and
+// the distortion. For a single chart, a mesh that is not a disk (closed, with holes or
+// handles) is cut along seams: those of --seams, or automatic seams (compute_disk_seams);
 // --write-seams=FILE writes the seams used as a CGAL selection file.
 // On any failure it says why on stderr, exits with a non-zero status and leaves no output
 // file. The library does no IO; this program is the IO layer: options.h (the command line),
-// run.h (the mesh and its parameterization: the only code that calls the library),
+// run.h (the mesh and its atlas or parameterization: the only code that calls the library),
 // obj_writer.h, svg_writer.h, json_output.h and summary.h (the outputs), file_output.h (the
 // files, all or nothing).
 
@@ -157,6 +163,14 @@ std::string write_outputs(const Run_facts& f, Output_files& files)
 void print_notes(const Run_facts& f)
 {
   const Run_result& r = f.result;
+  if(f.options.mode == Mode::atlas)
+  {
+    if(r.atlas.empty_polygons > 0)
+      std::cerr << "note: " << r.atlas.empty_polygons
+                << (r.atlas.empty_polygons == 1 ? " polygon without vertices was" : " polygons without vertices were")
+                << " left out of " << f.options.output << "\n";
+    return;
+  }
   const std::size_t isolated = r.input_vertices - r.layout.vertices.size();
   if(isolated > 0)
     std::cerr << "note: " << isolated << " vertices in no face were left out of " << f.options.output << "\n";
@@ -194,7 +208,7 @@ int main(int argc, char** argv)
     return fail_with(output_problem, usage ? exit_usage : exit_failure, options.json);
   if(!generated)
   {
-    const Run_error e = run.read(options.input);
+    const Run_error e = run.read(options.input, options.mode);
     if(e.failed())
       return fail_with(e.message, exit_failure, options.json, e.error_code);
   }
@@ -203,7 +217,7 @@ int main(int argc, char** argv)
   facts.generated = generated;
   facts.mesh_name = generated ? std::string("curved disk (generated)") : fs::path(options.input).filename().string();
 
-  // the parameterization
+  // the atlas, or the single chart
   const Run_error e = run.parameterize(options);
   if(e.failed())
     return fail_with(e.message, exit_failure, options.json, e.error_code);

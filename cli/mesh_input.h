@@ -212,6 +212,18 @@ Failure build_mesh(Polygon_soup& soup, Mesh& mesh)
 
 } // namespace detail
 
+/// reads the polygon soup of the file `path` (.off, .obj, .ply or .stl) with the streaming
+/// readers of mesh_reader.h: points in file order (STL: equal points merged, in order of first
+/// appearance), every index checked, no non-finite coordinate. On failure, the message names
+/// the problem (the caller prefixes the file name).
+inline Failure read_soup_file(const std::string& path, Polygon_soup& soup)
+{
+  const std::string ext = lowercase_extension(path);
+  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+    return detail::unsupported_extension(path);
+  return detail::read_soup(path, ext, soup);
+}
+
 /// reads the polygon mesh of the file `path` (.off, .obj, .ply or .stl) with the streaming
 /// readers of mesh_reader.h, then builds it as CGAL's polygon soup to polygon mesh does
 /// (every point a vertex, in file order; `Euler::add_face` in file order, which refuses a
@@ -221,11 +233,8 @@ Failure build_mesh(Polygon_soup& soup, Mesh& mesh)
 template <class Mesh>
 Failure read_mesh(const std::string& path, Mesh& mesh)
 {
-  const std::string ext = lowercase_extension(path);
-  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
-    return detail::unsupported_extension(path);
   Polygon_soup soup;
-  const Failure f = detail::read_soup(path, ext, soup);
+  const Failure f = read_soup_file(path, soup);
   if(f.failed())
     return f;
   return detail::build_mesh(soup, mesh);

@@ -7,9 +7,12 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// The OBJ output of the measured_parameterization program (obj_writer.cpp): the input
-// vertices that are in a face ('v'), the UVs ('vt': one per vertex, or one per side of a
-// seam), the faces 'f v/vt', and a header of comments. No CGAL here.
+// The OBJ output of the measured_parameterization program (obj_writer.cpp), with a header of
+// comments. The atlas: the input's points ('v', all of them, in input order), one UV per
+// polygon corner ('vt', in polygon order), the input's polygons in their order ('f v/vt ...')
+// and a group 'g chart_K' wherever the chart changes. A single chart: the input vertices that
+// are in a face ('v'), the UVs ('vt': one per vertex, or one per side of a seam), the faces
+// 'f v/vt'. No CGAL here.
 
 #ifndef MBP_CLI_OBJ_WRITER_H
 #define MBP_CLI_OBJ_WRITER_H

@@ -21,35 +21,60 @@ namespace {
 // The help text, in three parts: before the default mesh, before the default solver, and
 // after it.
 const char* const usage_synopsis =
-    "usage: measured_parameterization [INPUT] [OUTPUT.obj] [--seams=FILE.selection.txt]\n"
+    "usage: measured_parameterization [INPUT] [OUTPUT.obj] [--atlas] [--resolution=N] [--gutter=N]\n"
+    "                                 [--output=FILE] [--svg=FILE] [--json] [--help]\n"
+    "       measured_parameterization [INPUT] [OUTPUT.obj] --single-chart [--seams=FILE.selection.txt]\n"
     "                                 [--center=poisson|geodesic[:METHOD]|vertex:N]\n"
     "                                 [--distance=poisson|METHOD|straightest] [--border=auto|conformal|measured|circle]\n"
     "                                 [--solver=cholmod|cholmod-nd|ldlt] [--output=FILE] [--svg=FILE] [--json]\n"
     "                                 [--write-seams=FILE.selection.txt]\n"
     "                                 [--no-repair] [--help]\n"
     "\n"
-    "Flattens a disk-like triangle mesh with the measured boundary parameterization of\n"
-    "\"Measured boundary parameterization based on Poisson's equation\": the longest border is\n"
-    "laid out around a center vertex at its measured distances from it, and the interior is\n"
-    "the discrete conformal map with that border fixed. A mesh that is not a disk (closed, with\n"
-    "holes or with handles) is first cut open into a disk along seams: those of --seams, or\n"
-    "automatic seams (see --seams).\n"
+    "By default (--atlas) makes a packed texture atlas of any mesh: the file is read as a polygon\n"
+    "soup and repaired (equal points merged, duplicate and degenerate polygons, non-manifold\n"
+    "edges and vertices, orientation, non-orientable pieces cut open, polygons triangulated,\n"
+    "zero-area faces set aside); every connected component becomes a chart (a disk flattened with\n"
+    "the automatic border, any other surface cut along automatic seams first), split where its\n"
+    "map would not be one-to-one; the charts are scaled to one texel density and packed into\n"
+    "the unit square. Every corner of every input polygon gets a UV.\n"
     "\n"
-    "  INPUT              a triangle mesh: .off, .obj, .ply or .stl, one connected component\n"
-    "                     with at least one border (holes are allowed; the longest border is\n"
-    "                     mapped), or cut along --seams. Default: ";
+    "With --single-chart (implied by each of its options: --border, --center, --distance,\n"
+    "--seams, --write-seams, --solver, --no-repair) flattens one disk-like triangle mesh with\n"
+    "the measured boundary parameterization of \"Measured boundary parameterization based on\n"
+    "Poisson's equation\": the longest border is laid out around a center vertex at its measured\n"
+    "distances from it, and the interior is the discrete conformal map with that border fixed.\n"
+    "A mesh that is not a disk (closed, with holes or with handles) is first cut open into a\n"
+    "disk along seams: those of --seams, or automatic seams (see --seams).\n"
+    "\n"
+    "  INPUT              .off, .obj, .ply or .stl. Atlas: any polygons, any number of\n"
+    "                     connected components, defects repaired. --single-chart: a triangle\n"
+    "                     mesh, one connected component with at least one border (holes are\n"
+    "                     allowed; the longest border is mapped), or cut along --seams.\n"
+    "                     Default: ";
 
 const char* const usage_options =
     "\n"
     "                     (a generated curved disk when that file does not exist).\n"
-    "  OUTPUT.obj         the mesh with one UV per vertex: 'v' lines in input order, one 'vt'\n"
-    "                     line per 'v' line, faces 'f a/a b/b c/c'. Vertices that are in no face\n"
-    "                     are left out. Default: <INPUT file stem>_uv.obj in the current\n"
-    "                     directory (curved_disk_uv.obj for the generated mesh).\n"
-    "                     With --seams: one 'vt' line per vertex of the cut mesh (a vertex on a\n"
-    "                     seam gets one UV for each side), faces 'f a/i b/j c/k'.\n"
+    "  OUTPUT.obj         default: <INPUT file stem>_uv.obj in the current directory\n"
+    "                     (curved_disk_uv.obj for the generated mesh).\n"
+    "                     Atlas: the input's points as 'v' lines in input order (all of them),\n"
+    "                     one 'vt' line per polygon corner (polygon after polygon), the input's\n"
+    "                     polygons in their order as 'f v/vt ...', and 'g chart_K' before the\n"
+    "                     polygons of chart K wherever the chart changes.\n"
+    "                     --single-chart: the mesh with one UV per vertex: 'v' lines in input\n"
+    "                     order, one 'vt' line per 'v' line, faces 'f a/a b/b c/c'. Vertices\n"
+    "                     that are in no face are left out. With --seams: one 'vt' line per\n"
+    "                     vertex of the cut mesh (a vertex on a seam gets one UV for each\n"
+    "                     side), faces 'f a/i b/j c/k'.\n"
     "\n"
     "options:\n"
+    "  --atlas            (default) a packed texture atlas, as above\n"
+    "  --resolution=N     the atlas is packed for a square texture of N texels per side\n"
+    "                     (default 1024, from 8 to 65536)\n"
+    "  --gutter=N         texels kept free between two charts and between a chart and the\n"
+    "                     border of the texture (default 2, at most N / 4 of --resolution)\n"
+    "  --single-chart     the single-chart parameterization below; each of the following\n"
+    "                     options implies it\n"
     "  --seams=FILE.selection.txt\n"
     "                     cut the mesh along seams before mapping it (CGAL::Seam_mesh): the\n"
     "                     third line of this CGAL selection file lists the seam edges as pairs\n"
@@ -103,21 +128,25 @@ const char* const usage_options =
 const char* const usage_notes =
     "\n"
     "  --output=FILE      the same as OUTPUT.obj (for example with the default INPUT)\n"
-    "  --svg=FILE         also write an SVG picture of the UV layout, faces colored by their\n"
-    "                     angle distortion, flipped faces in red\n"
+    "  --svg=FILE         also write an SVG picture. Atlas: the unit square with the packed\n"
+    "                     charts, each outlined, faces colored by their area distortion.\n"
+    "                     --single-chart: the UV layout, faces colored by their angle\n"
+    "                     distortion, flipped faces in red\n"
     "  --json             print a JSON object on stdout instead of the one-line summary\n"
     "  --no-repair        fail when the layout has flipped faces (by default the border is\n"
     "                     blended toward a circle, as little as needed, until none is left)\n"
     "  -h, --help         print this help and exit\n"
     "\n"
-    "The summary gives the number of vertices (V) and faces (F), with seams the number of seam\n"
-    "edges (and of cones for automatic seams) and of UVs, the border (vertices, 3D length; a\n"
-    "seam counts on both sides), the center (0-based index in the input), the time of each\n"
-    "stage of the parameterization in\n"
-    "seconds, the factorizations and back-substitutions, and the\n"
-    "distortion: angle distortion (the paper's conformal distortion), Sander's L2 stretch\n"
-    "(1 is optimal), the area-weighted mean quasi-conformal distortion s1/s2 (1 is\n"
-    "conformal) and the number of flipped faces.\n"
+    "The atlas summary gives the input's points and polygons, the charts, the utilization of the\n"
+    "square (UV area of the charts over its area), the repairs made to the input, the area\n"
+    "spread (area-weighted mean |log(UV area / 3D area)| after one global scale), the angle\n"
+    "distortion and the time of each step. The --single-chart summary gives the number of\n"
+    "vertices (V) and faces (F), with seams the number of seam edges (and of cones for\n"
+    "automatic seams) and of UVs, the border (vertices, 3D length; a seam counts on both sides),\n"
+    "the center (0-based index in the input), the time of each stage of the parameterization in\n"
+    "seconds, the factorizations and back-substitutions, and the distortion: angle distortion\n"
+    "(the paper's conformal distortion), Sander's L2 stretch (1 is optimal), the area-weighted\n"
+    "mean quasi-conformal distortion s1/s2 (1 is conformal) and the number of flipped faces.\n"
     "\n"
     "The measured border need not be convex, so the layout can fold: flipped faces are then\n"
     "repaired by blending the border toward a circle (reported in the summary), or, with\n"
@@ -213,6 +242,22 @@ std::string set_solver(const std::string& value, Options& o)
   return std::string();
 }
 
+// --NAME=N, a whole number from `least` to `most`
+std::string set_count(const std::string& value, const std::string& name, unsigned int least, unsigned int most,
+                      unsigned int& n)
+{
+  unsigned long long x = 0;
+  const auto r = std::from_chars(value.data(), value.data() + value.size(), x);
+  const std::string expected = " (expected a whole number from " + std::to_string(least) + " to " +
+                               std::to_string(most) + ")";
+  if(value.empty() || r.ptr != value.data() + value.size() || r.ec == std::errc::invalid_argument)
+    return "bad value '" + value + "' of " + name + expected;
+  if(r.ec == std::errc::result_out_of_range || x < least || x > most)
+    return "value " + value + " of " + name + " is out of range" + expected;
+  n = static_cast<unsigned int>(x);
+  return std::string();
+}
+
 // --NAME=FILE: `file` is set, or the error for an empty name
 std::string set_file(const std::string& value, const std::string& name, const char* placeholder, std::string& file)
 {
@@ -258,6 +303,15 @@ public:
         return "option --no-repair is given twice";
       m_o.repair = false;
     }
+    else if(arg == "--atlas" || arg == "--single-chart")
+    {
+      bool& seen = (arg == "--atlas") ? m_atlas : m_single_chart;
+      if(seen)
+        return "option " + arg + " is given twice";
+      seen = true;
+    }
+    else if(starts_with(arg, "--atlas=") || starts_with(arg, "--single-chart="))
+      return "option " + arg.substr(0, arg.find('=')) + " takes no value";
     else
       return value_option(arg);
     return std::string();
@@ -266,6 +320,9 @@ public:
   // the defaults that depend on other options, and the positional arguments
   std::string finish()
   {
+    const std::string mode_problem = choose_mode();
+    if(!mode_problem.empty())
+      return mode_problem;
     // the automatic border's measured member: fast marching geodesics unless asked otherwise
     // (no second matrix to factorize); the measured border alone: the paper's Poisson distances
     if(!seen("--distance") && m_o.border == Border::automatic)
@@ -289,6 +346,34 @@ public:
   }
 
 private:
+  // The mode: the atlas unless --single-chart or one of its options is given; the options of
+  // one mode are refused in the other.
+  std::string choose_mode()
+  {
+    std::string single_option = m_single_chart ? "--single-chart" : m_o.repair ? "" : "--no-repair";
+    for(const char* name : {"--border", "--center", "--distance", "--seams", "--write-seams", "--solver"})
+      if(single_option.empty() && seen(name))
+        single_option = name;
+    const std::string atlas_option = seen("--resolution") ? "--resolution" : seen("--gutter") ? "--gutter" : "";
+    if(single_option.empty())
+    {
+      m_o.mode = Mode::atlas;
+      if(m_o.gutter > m_o.resolution / 4)
+        return "--gutter=" + std::to_string(m_o.gutter) + " is too wide for --resolution=" +
+               std::to_string(m_o.resolution) + " (at most " + std::to_string(m_o.resolution / 4) +
+               " texels: a quarter of the resolution)";
+      return std::string();
+    }
+    m_o.mode = Mode::single_chart;
+    if(m_atlas)
+      return "option --atlas cannot be combined with " + single_option +
+             (single_option == "--single-chart" ? std::string() : " (an option of the single-chart mode)");
+    if(!atlas_option.empty())
+      return "option " + atlas_option + " (of the atlas) cannot be combined with " + single_option +
+             (single_option == "--single-chart" ? std::string() : " (an option of the single-chart mode)");
+    return std::string();
+  }
+
   bool seen(const std::string& name) const
   {
     for(const Value_option& v : m_values)
@@ -312,7 +397,8 @@ private:
   Options& m_o;
   std::vector<std::string> m_positional;
   bool m_options_ended = false;
-  Value_option m_values[8] = {
+  bool m_atlas = false, m_single_chart = false;  // --atlas, --single-chart
+  Value_option m_values[10] = {
     {"--center", set_center, false},
     {"--distance", set_distance, false},
     {"--border", set_border, false},
@@ -323,7 +409,11 @@ private:
     {"--write-seams",
      [](const std::string& v, Options& o) { return set_file(v, "--write-seams", "FILE.selection.txt", o.write_seams); },
      false},
-    {"--svg", [](const std::string& v, Options& o) { return set_file(v, "--svg", "FILE", o.svg); }, false}};
+    {"--svg", [](const std::string& v, Options& o) { return set_file(v, "--svg", "FILE", o.svg); }, false},
+    {"--resolution",
+     [](const std::string& v, Options& o) { return set_count(v, "--resolution", 8, 1u << 16, o.resolution); }, false},
+    {"--gutter", [](const std::string& v, Options& o) { return set_count(v, "--gutter", 0, 1u << 14, o.gutter); },
+     false}};
 };
 
 } // namespace
@@ -346,6 +436,11 @@ const char* border_name(Border b)
 {
   return b == Border::conformal ? "conformal" : b == Border::measured ? "measured"
          : b == Border::circle  ? "circle"    : "auto";
+}
+
+const char* mode_name(Mode m)
+{
+  return m == Mode::atlas ? "atlas" : "single-chart";
 }
 
 const std::vector<std::string>& geodesic_methods()

@@ -24,12 +24,20 @@ enum class Solver { ldlt, cholmod, cholmod_nd };
 /// the border the run lays out (`--border=`)
 enum class Border { automatic, conformal, measured, circle };
 
+/// what the run makes: a packed texture atlas of any polygon soup (`--atlas`, the default), or
+/// the single-chart parameterization of a triangle mesh (`--single-chart`, implied by the
+/// options of that mode: --border, --center, --distance, --seams, --write-seams, --solver,
+/// --no-repair)
+enum class Mode { atlas, single_chart };
+
 /// whether this build has CHOLMOD (`MBP_WITH_CHOLMOD`)
 bool has_cholmod();
 /// the command-line name of a solver: cholmod, cholmod-nd or ldlt
 const char* solver_name(Solver s);
 /// the command-line name of a border: auto, conformal, measured or circle
 const char* border_name(Border b);
+/// the name of a mode: atlas or single-chart
+const char* mode_name(Mode m);
 
 struct Options
 {
@@ -41,6 +49,9 @@ struct Options
   std::string write_seams;  // --write-seams=FILE: the seams used, as a CGAL selection file
   bool json = false;
   bool help = false;
+  Mode mode = Mode::atlas;
+  unsigned int resolution = 1024;   // --resolution=N: texels per side of the atlas texture
+  unsigned int gutter = 2;          // --gutter=N: texels between charts and to the border
   bool repair = true;       // --no-repair turns it off
   Border border = Border::automatic;
   bool fixed_center = false;        // --center=vertex:N

@@ -8,16 +8,21 @@
 // Author(s)     : The measured boundary parameterization authors
 
 // The run of the measured_parameterization program (run.h): the only file that calls the
-// library. The mesh is a CGAL::Surface_mesh; a mesh that is not a disk is cut along seams (a
-// CGAL::Seam_mesh over it) and parameterized with Conformal_parameterizer_3, for the solver
-// traits of --solver and the border policy of --border (Automatic_border, Conformal_border,
-// Measured_border or Circular_border, chosen at run time among the instantiated policies); the
-// helpers mesh_input.h and seam_selection.h read and check the mesh and the seams.
+// library. The atlas (the default mode): the polygon soup as read goes to
+// compute_atlas_of_polygon_soup(), which repairs it, makes its charts and packs them; its
+// UVs per polygon corner and chart ids come back in the input's numbering.
+// A single chart (--single-chart): the mesh is a CGAL::Surface_mesh; a mesh that is not a
+// disk is cut along seams (a CGAL::Seam_mesh over it) and parameterized with
+// Conformal_parameterizer_3, for the solver traits of --solver and the border policy of
+// --border (Automatic_border, Conformal_border, Measured_border or Circular_border, chosen at
+// run time among the instantiated policies); the helpers mesh_input.h and seam_selection.h
+// read and check the mesh and the seams.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Seam_mesh.h>
 
+#include <CGAL/Surface_mesh_parameterization/Atlas_report.h>
 #include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Disk_seams_report.h>
@@ -29,6 +34,7 @@
 #include <CGAL/Surface_mesh_parameterization/Poisson_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Poisson_center_locator.h>
 #include <CGAL/Surface_mesh_parameterization/Straightest_geodesic_border_distance.h>
+#include <CGAL/Surface_mesh_parameterization/compute_atlas.h>
 #include <CGAL/Surface_mesh_parameterization/compute_disk_seams.h>
 #include <CGAL/Surface_mesh_parameterization/main_border.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
@@ -45,6 +51,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
 #include <set>
 #include <string>
@@ -530,6 +537,147 @@ std::array<double, 3> point_of(const Mesh& mesh, std::size_t i)
   return {p.x(), p.y(), p.z()};
 }
 
+// ---------------------------------------------------------------------------- the atlas
+
+// The soup of a mesh (the generated curved disk): its points in order, its faces.
+void soup_of(const Mesh& mesh, mbp_cli::Polygon_soup& soup)
+{
+  for(vertex_descriptor v : vertices(mesh))
+  {
+    const Point_3& p = mesh.point(v);
+    soup.points.push_back({p.x(), p.y(), p.z()});
+  }
+  for(face_descriptor fd : faces(mesh))
+  {
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(fd, mesh), mesh))
+      soup.corners.push_back(static_cast<std::uint32_t>(std::size_t(v)));
+    soup.face_end.push_back(static_cast<std::uint32_t>(soup.corners.size()));
+  }
+}
+
+// The power of two that brings coordinates so large (or small) that squared lengths would
+// overflow (above 2^60, about 1e18) or underflow (below 2^-60) near 1 (exact in floating
+// point: the atlas does not depend on the scale); 0 when they need none.
+int scale_exponent_of(const std::vector<std::array<double, 3> >& points)
+{
+  double largest = 0.;
+  for(const std::array<double, 3>& p : points)
+    largest = (std::max)({largest, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+  if(!std::isfinite(largest) || !(largest > std::ldexp(1., 60) || (largest > 0. && largest < std::ldexp(1., -60))))
+    return 0;
+  return -std::ilogb(largest);
+}
+
+// The area of polygon `i` of the soup in 3D (the norm of its vector area) and in UV (the
+// absolute value of its shoelace area), its points multiplied by 2^exponent; both from its
+// first corner, so that a polygon far from the origin loses no precision.
+std::array<double, 2> polygon_areas(const mbp_cli::Polygon_soup& soup, const std::vector<std::array<double, 2> >& uv,
+                                    std::size_t i, int exponent)
+{
+  const std::size_t begin = soup.face_begin(i), n = soup.face_size(i);
+  if(n < 3)
+    return {0., 0.};
+  const std::array<double, 3>& o = soup.points[soup.corners[begin]];
+  auto from_first = [&](std::size_t k) {
+    const std::array<double, 3>& p = soup.points[soup.corners[begin + k]];
+    return std::array<double, 3>{std::ldexp(p[0] - o[0], exponent), std::ldexp(p[1] - o[1], exponent),
+                                 std::ldexp(p[2] - o[2], exponent)};
+  };
+  std::array<double, 3> vector_area = {0., 0., 0.};
+  double uv_area = 0.;
+  for(std::size_t k = 1; k + 1 < n; ++k)
+  {
+    const std::array<double, 3> p = from_first(k), q = from_first(k + 1);
+    vector_area[0] += p[1] * q[2] - p[2] * q[1];
+    vector_area[1] += p[2] * q[0] - p[0] * q[2];
+    vector_area[2] += p[0] * q[1] - p[1] * q[0];
+    const std::array<double, 2>& a = uv[begin], &b = uv[begin + k], &c = uv[begin + k + 1];
+    uv_area += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  }
+  return {0.5 * std::sqrt(vector_area[0] * vector_area[0] + vector_area[1] * vector_area[1] +
+                          vector_area[2] * vector_area[2]),
+          0.5 * std::abs(uv_area)};
+}
+
+// Why the library made no atlas, with the details its code does not give.
+Failure explain_atlas_failure(SMP::Error_code code, const mbp_cli::Polygon_soup& soup, std::size_t polygons,
+                              const mbp_cli::Options& options)
+{
+  Failure f;
+  f.code = code;
+  if(code == SMP::ERROR_EMPTY_MESH)
+  {
+    // all the points of the polygons at one point, or no polygon with an area
+    bool one_point = true;
+    for(std::uint32_t c : soup.corners)
+      one_point = one_point && soup.points[c] == soup.points[soup.corners[0]];
+    const std::array<double, 3>& p = soup.points[soup.corners[0]];
+    std::vector<bool> used(soup.points.size(), false);
+    std::size_t count = 0;
+    for(std::uint32_t c : soup.corners)
+      if(!used[c])
+      {
+        used[c] = true;
+        ++count;
+      }
+    f.detail = one_point ? "all " + std::to_string(count) + " vertices of its faces coincide (at " +
+                             mbp_cli::exact(p[0]) + " " + mbp_cli::exact(p[1]) + " " + mbp_cli::exact(p[2]) +
+                             "): the mesh has no extent"
+                         : "no polygon has three distinct points and a nonzero area (" +
+                             std::to_string(polygons) + (polygons == 1 ? " polygon)" : " polygons)");
+  }
+  else if(code == SMP::ERROR_WRONG_PARAMETER)
+    f.detail = "the charts do not fit into a texture of " + std::to_string(options.resolution) + " x " +
+               std::to_string(options.resolution) + " texels with a gutter of " + std::to_string(options.gutter) +
+               " texels (raise --resolution or lower --gutter)";
+  return f;
+}
+
+// The polygons of the soup that have corners (the library takes polygons of 1 corner or more).
+std::vector<std::vector<std::size_t> > polygons_with_corners(const mbp_cli::Polygon_soup& soup)
+{
+  std::vector<std::vector<std::size_t> > polygons;
+  polygons.reserve(soup.number_of_faces());
+  for(std::size_t i = 0; i < soup.number_of_faces(); ++i)
+    if(soup.face_size(i) > 0)
+      polygons.emplace_back(soup.corners.begin() + std::ptrdiff_t(soup.face_begin(i)),
+                            soup.corners.begin() + std::ptrdiff_t(soup.face_end[i]));
+  return polygons;
+}
+
+// The library's UVs and charts of the polygons with corners, given to the input's polygons:
+// one UV per corner of the soup, the chart of every polygon (none for those without corners).
+Failure take_atlas(const std::vector<std::vector<Point_2> >& corner_uvs, const std::vector<std::size_t>& charts,
+                   mbp_cli::Atlas_result& a)
+{
+  const mbp_cli::Polygon_soup& soup = a.soup;
+  a.uv.reserve(soup.corners.size());
+  a.polygon_chart.assign(soup.number_of_faces(), mbp_cli::Atlas_result::no_chart);
+  for(std::size_t i = 0, p = 0; i < soup.number_of_faces(); ++i)
+  {
+    if(soup.face_size(i) == 0)
+      continue;
+    for(const Point_2& q : corner_uvs[p])
+    {
+      if(!std::isfinite(q.x()) || !std::isfinite(q.y()))
+        return Failure{SMP::OK, "the library gave a non-finite UV to a corner of polygon " + std::to_string(i)};
+      a.uv.push_back({q.x(), q.y()});
+    }
+    a.polygon_chart[i] = charts[p++];
+  }
+  return Failure();
+}
+
+// The input's lengths and areas in the report: the points were multiplied by 2^exponent.
+void unscale_report(SMP::Atlas_report& report, int exponent)
+{
+  if(exponent == 0)
+    return;
+  report.texel_density = std::ldexp(report.texel_density, exponent);
+  for(SMP::Atlas_chart_report& c : report.charts)
+    c.area_3d = std::ldexp(c.area_3d, -2 * exponent);
+}
+
 } // namespace
 
 namespace mbp_cli {
@@ -544,11 +692,56 @@ struct Run::Impl
 
   Run_error fail(const Failure& f) const { return Run_error{where + ": " + f.message(), int(f.code)}; }
 
+  Run_error make_atlas(const Options& options);
   Run_error cut(const Options& options);
   Failure parameterize_cut(const Options& options);
   Failure parameterize_disk(const Options& options);
   void finish(const Options& options, int scale_exponent);
 };
+
+// The atlas of the soup: the library's compute_atlas_of_polygon_soup() on its polygons with
+// corners (its points scaled by a power of two when their magnitude needs it), then the UVs
+// and charts in the input's numbering and the distortion of every polygon.
+Run_error Run::Impl::make_atlas(const Options& options)
+{
+  Atlas_result& a = result.atlas;
+  Polygon_soup& soup = a.soup;
+  if(soup.points.empty() && num_vertices(mesh) > 0)  // the generated curved disk
+    soup_of(mesh, soup);
+  const int exponent = scale_exponent_of(soup.points);
+  std::vector<std::array<double, 3> > scaled;
+  if(exponent != 0)
+    for(const std::array<double, 3>& p : soup.points)
+      scaled.push_back({std::ldexp(p[0], exponent), std::ldexp(p[1], exponent), std::ldexp(p[2], exponent)});
+  std::vector<std::vector<std::size_t> > polygons = polygons_with_corners(soup);
+  a.empty_polygons = soup.number_of_faces() - polygons.size();
+  if(polygons.empty())
+    return fail(Failure{SMP::ERROR_EMPTY_MESH, "it has no faces (" + std::to_string(soup.points.size()) + " vertices)"});
+  SMP::Atlas_options atlas_options;
+  atlas_options.resolution = options.resolution;
+  atlas_options.gutter = options.gutter;
+  std::vector<std::vector<Point_2> > corner_uvs;
+  std::vector<std::size_t> charts;
+  const SMP::Error_code status = SMP::compute_atlas_of_polygon_soup(exponent != 0 ? scaled : soup.points, polygons,
+                                                                    corner_uvs, charts, atlas_options, &a.report);
+  if(status != SMP::OK)
+    return fail(explain_atlas_failure(status, soup, polygons.size(), options));
+  std::vector<std::vector<std::size_t> >().swap(polygons);
+  const Failure f = take_atlas(corner_uvs, charts, a);
+  if(f.failed())
+    return fail(f);
+  // the area distortion of every polygon after the one scale of the atlas
+  const double uv_per_3d_area = a.report.texel_density * a.report.texel_density;
+  a.polygon_area_distortion.assign(soup.number_of_faces(), 0.);
+  for(std::size_t i = 0; i < soup.number_of_faces(); ++i)
+  {
+    const std::array<double, 2> area = polygon_areas(soup, a.uv, i, exponent);
+    if(area[0] > 0. && area[1] > 0. && uv_per_3d_area > 0.)
+      a.polygon_area_distortion[i] = std::abs(std::log(area[1] / (area[0] * uv_per_3d_area)));
+  }
+  unscale_report(a.report, exponent);
+  return Run_error();
+}
 
 // The seams of a mesh that is not a disk: automatic ones, or those of --seams.
 Run_error Run::Impl::cut(const Options& options)
@@ -637,15 +830,17 @@ std::array<std::size_t, 2> Run::generate_curved_disk()
   return {num_vertices(m->mesh), num_faces(m->mesh)};
 }
 
-Run_error Run::read(const std::string& path)
+Run_error Run::read(const std::string& path, Mode mode)
 {
   m->where = path;
-  const Failure f = read_mesh(path, m->mesh);
+  const Failure f = mode == Mode::atlas ? read_soup_file(path, m->result.atlas.soup) : read_mesh(path, m->mesh);
   return f.failed() ? m->fail(f) : Run_error();
 }
 
 Run_error Run::parameterize(const Options& options)
 {
+  if(options.mode == Mode::atlas)
+    return m->make_atlas(options);
   Failure f = check_mesh(m->mesh);
   if(f.failed())
     return m->fail(f);

@@ -7,18 +7,22 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// The run of the measured_parameterization program behind an interface without CGAL: the
-// mesh is read, checked, cut along seams when it is not a disk, parameterized, and its
-// distortion measured by run.cpp, the only file that calls the library. What the run gives
-// the writers (OBJ, SVG, JSON, summary) is plain data, and the library's report of the
-// parameterization, `Parameterization_report` (a plain struct: its header holds no CGAL code
-// but the error codes).
+// The run of the measured_parameterization program behind an interface without CGAL, by
+// run.cpp, the only file that calls the library. In the atlas mode (the default) the file is
+// read as a polygon soup and the library repairs it, makes its charts and packs them; in the
+// single-chart mode the mesh is read, checked, cut along seams when it is not a disk,
+// parameterized, and its distortion measured. What the run gives the writers (OBJ, SVG, JSON,
+// summary) is plain data, and the library's reports, `Atlas_report` and
+// `Parameterization_report` (plain structs: their headers hold no CGAL code but the error
+// codes).
 
 #ifndef MBP_CLI_RUN_H
 #define MBP_CLI_RUN_H
 
+#include "mesh_reader.h"
 #include "options.h"
 
+#include <CGAL/Surface_mesh_parameterization/Atlas_report.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 
 #include <array>
@@ -85,9 +89,28 @@ struct Seams
   std::string selection;              // with --write-seams: the text of the selection file
 };
 
+/// The atlas of the input (`--atlas`), in the input's numbering: its points and polygons as
+/// read, the UV of every polygon corner and the chart of every polygon (the library's
+/// `compute_atlas_of_polygon_soup()`).
+struct Atlas_result
+{
+  static constexpr std::size_t no_chart = std::size_t(-1);
+
+  Polygon_soup soup;                               // the input: 'v' lines, and the polygons in their order
+  std::vector<std::array<double, 2> > uv;          // per corner of the soup ('vt'), in [0,1]^2
+  std::vector<std::size_t> polygon_chart;          // per polygon: its chart (no_chart: a polygon without corners)
+  /// per polygon: |log(UV area / (3D area * texel_density^2))|, its area distortion after the
+  /// one scale of the atlas (0 when either area is 0)
+  std::vector<double> polygon_area_distortion;
+  std::size_t empty_polygons = 0;                  // polygons without corners: not given to the library
+  /// the library's report; its lengths and areas in the input's unit
+  CGAL::Surface_mesh_parameterization::Atlas_report report;
+};
+
 /// What the run gives the writers.
 struct Run_result
 {
+  Atlas_result atlas;                 // --atlas; the members below are those of --single-chart
   Uv_layout layout;
   Quality quality;
   double quality_seconds = 0.;        // time of the distortion measures
@@ -113,7 +136,8 @@ struct Run_facts
   double read_seconds = 0., write_seconds = 0.;
 };
 
-/// One run: a mesh (read from a file, or generated), then its parameterization.
+/// One run: a mesh or a polygon soup (read from a file, or generated), then its atlas or its
+/// parameterization.
 class Run
 {
 public:
@@ -124,10 +148,12 @@ public:
 
   /// makes the mesh the generated curved disk; returns its numbers of vertices and faces
   std::array<std::size_t, 2> generate_curved_disk();
-  /// reads the mesh of the file `path` (.off, .obj, .ply or .stl)
-  Run_error read(const std::string& path);
-  /// checks the mesh, cuts it along seams when it is not a disk (those of --seams, or
-  /// automatic ones), parameterizes it and measures the distortion
+  /// reads the file `path` (.off, .obj, .ply or .stl): for the atlas the polygon soup as it
+  /// is, for a single chart the mesh
+  Run_error read(const std::string& path, Mode mode);
+  /// the atlas: the library repairs the soup, makes its charts and packs them; a single chart:
+  /// checks the mesh, cuts it along seams when it is not a disk (those of --seams, or automatic
+  /// ones), parameterizes it and measures the distortion
   Run_error parameterize(const Options& options);
   /// the result of `parameterize()`
   const Run_result& result() const;

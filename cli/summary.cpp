@@ -7,8 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// The one-line summary of a run and the texts of the border kept and the repair (summary.h).
-// No CGAL here but the library's report.
+// The one-line summary of a run and the texts of the border kept and the repair, or of the
+// atlas (summary.h). No CGAL here but the library's reports.
 
 #include "summary.h"
 
@@ -68,8 +68,72 @@ std::string repair_text(const SMP::Parameterization_report& report, bool enabled
   return enabled ? "no repair needed" : "repair off";
 }
 
+namespace {
+
+// "1 polygon", "2 polygons"
+std::string counted(std::size_t n, const std::string& noun)
+{
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
+// the one-line summary of an atlas
+std::string atlas_summary_line(const Run_facts& f)
+{
+  const Options& o = f.options;
+  const Atlas_result& a = f.result.atlas;
+  const SMP::Atlas_report& r = a.report;
+  return f.mesh_name + ": " + counted(a.soup.points.size(), "point") + ", " +
+         counted(a.soup.number_of_faces(), "polygon") + " | " + atlas_charts_text(f) + " | repairs: " +
+         repair_list(r.repair) + " | area spread " + rounded(r.area_spread) + ", angle distortion " +
+         rounded(r.angle_distortion) + " | seconds: repair " + rounded(r.repair_seconds, 3) + ", charts " +
+         rounded(r.chart_seconds, 3) + ", packing " + rounded(r.packing_seconds, 3) + ", total " +
+         rounded(r.total_seconds, 3) + " | wrote " + o.output + (o.svg.empty() ? std::string() : ", " + o.svg) + "\n";
+}
+
+} // namespace
+
+std::string repair_list(const SMP::Soup_repair_report& r)
+{
+  struct Repair
+  {
+    std::size_t count;
+    const char *one, *many;  // the text after the count
+  };
+  const Repair repairs[] = {
+    {r.merged_points, "point merged", "points merged"},
+    {r.duplicate_polygons, "duplicate polygon", "duplicate polygons"},
+    {r.degenerate_polygons, "degenerate polygon", "degenerate polygons"},
+    {r.polygons_with_repeated_points, "polygon with a repeated point", "polygons with a repeated point"},
+    {r.non_manifold_edges, "non-manifold edge", "non-manifold edges"},
+    {r.pinched_vertices, "pinched vertex", "pinched vertices"},
+    {r.non_orientable_components, "non-orientable piece cut", "non-orientable pieces cut"},
+    {r.reoriented_polygons, "polygon re-oriented", "polygons re-oriented"},
+    {r.detached_polygons, "polygon detached", "polygons detached"},
+    {r.triangulated_polygons, "polygon triangulated", "polygons triangulated"},
+    {r.zero_area_triangles, "triangle of zero area", "triangles of zero area"}};
+  std::string s;
+  for(const Repair& repair : repairs)
+    if(repair.count > 0)
+      s += (s.empty() ? "" : ", ") + std::to_string(repair.count) + " " + (repair.count == 1 ? repair.one : repair.many);
+  return s.empty() ? std::string("none") : s;
+}
+
+const char* flattening_name(SMP::Chart_flattening f)
+{
+  return f == SMP::DISK_CHART ? "disk" : f == SMP::SEAMED_CHART ? "seamed" : "unfolded";
+}
+
+std::string atlas_charts_text(const Run_facts& f)
+{
+  const SMP::Atlas_report& r = f.result.atlas.report;
+  return counted(r.charts.size(), "chart") + ", utilization " + rounded(100. * r.utilization, 3) + "% (" +
+         std::to_string(f.options.resolution) + " texels, gutter " + std::to_string(f.options.gutter) + ")";
+}
+
 std::string summary_line(const Run_facts& f)
 {
+  if(f.options.mode == Mode::atlas)
+    return atlas_summary_line(f);
   const Options& o = f.options;
   const SMP::Parameterization_report& r = f.result.report;
   return summary_of_mesh(f) + " | border " + border_name(o.border) + ": " + kept_border(r, o.distance) +

@@ -7,9 +7,10 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// The one-line summary of a run, and the texts that name the border kept and the repair (also
-// in the OBJ header and the SVG caption), read from the plain data of the run and the
-// library's report (summary.cpp). No CGAL here but the report's header.
+// The one-line summary of a run, and the texts that name the border kept and the repair, or
+// the charts and the repairs of an atlas (also in the OBJ header and the SVG caption), read
+// from the plain data of the run and the library's reports (summary.cpp). No CGAL here but the
+// reports' headers.
 
 #ifndef MBP_CLI_SUMMARY_H
 #define MBP_CLI_SUMMARY_H
@@ -40,7 +41,17 @@ std::string kept_border(const CGAL::Surface_mesh_parameterization::Parameterizat
 /// interior", "no repair needed" or "repair off"
 std::string repair_text(const CGAL::Surface_mesh_parameterization::Parameterization_report& report, bool enabled);
 
-/// the one-line summary of a successful run
+/// the repairs of the atlas's input that change something, for people: "2 points merged, 1
+/// polygon re-oriented, 4 polygons triangulated", or "none"
+std::string repair_list(const CGAL::Surface_mesh_parameterization::Soup_repair_report& report);
+
+/// the name of a chart's flattening: disk, seamed or unfolded
+const char* flattening_name(CGAL::Surface_mesh_parameterization::Chart_flattening f);
+
+/// the atlas in a few words: "3 charts, utilization 61.2% (1024 texels, gutter 2)"
+std::string atlas_charts_text(const Run_facts& facts);
+
+/// the one-line summary of a successful run (the atlas or the single chart)
 std::string summary_line(const Run_facts& facts);
 
 } // namespace mbp_cli

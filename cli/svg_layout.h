@@ -9,7 +9,10 @@
 
 // An SVG picture of a UV layout: faces colored by their angle distortion (log scale, with a
 // legend), flipped faces in red and circled, the border as a closed polyline, the seams of a
-// cut mesh over it (both sides of each), the center marked, and a caption. No CGAL here.
+// cut mesh over it (both sides of each), the center marked, and a caption. Or, for an atlas,
+// polygons colored by another distortion in the framed unit square, the charts outlined.
+// The picture is widened where a caption line or a legend entry would not fit in it. No CGAL
+// here.
 //
 // Size: coordinates are integers in units of 1e-4 of the UV square (UV positions rounded to
 // 4 decimals), faces of one color share one path element, and each face is written as
@@ -22,6 +25,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -51,6 +55,17 @@ struct Svg_layout
   int wireframe = -1;                                     // mesh edges: 1 drawn, 0 not, -1 when they are long enough
   double mark_scale = 1.;                                 // scales the border line and the center marker of the
                                                           // layout (for a picture shown smaller than its nominal size)
+  // Polygons instead of triangles: when not empty, `faces` is not used, polygon i is drawn
+  // through uv[polygon_end[i - 1]], ..., uv[polygon_end[i] - 1] (polygon_end[-1] = 0), and
+  // face_angle_distortion and face_flipped are per polygon.
+  std::vector<std::size_t> polygon_end;
+  std::vector<std::array<std::size_t, 2> > outlines;      // chart outlines: uv index pairs, drawn over the faces
+  std::string outline_label;                              // their legend entry, e.g. "chart outlines (12 charts)"
+  bool unit_square = false;                               // draw [0,1]^2, framed, rather than the layout's bounding box
+  std::string frame_label;                                // the frame's legend entry (with unit_square)
+  std::string color_title = "angle distortion per face";  // the color bar's title and note
+  std::string color_note = "(mean of its 3 corners, log scale)";
+  bool layout_marks = true;                               // the legend's flipped faces, border and center entries
 };
 
 namespace detail {
@@ -108,6 +123,24 @@ inline std::string tick_text(double x)
   return buffer;
 }
 
+// The width of `text` in SVG units at `font_size`, estimated from its characters at or above
+// their advance in DejaVu Sans, the widest of the fonts the document names (narrow letters and
+// punctuation 0.4 em, wide letters and capitals 0.9 em, the others 0.64 em; bold 10% more):
+// for keeping every label inside the picture.
+inline long text_width(const std::string& text, long font_size, bool bold = false)
+{
+  static const std::string narrow = "fijlrt .,:;'|!()[]/-", wide = "mwMW@%";
+  double em = 0.;
+  for(char c : text)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    if((u & 0xc0) == 0x80)  // a continuation byte of UTF-8: its character is counted once
+      continue;
+    em += narrow.find(c) != std::string::npos ? 0.4 : (wide.find(c) != std::string::npos || std::isupper(u)) ? 0.9 : 0.64;
+  }
+  return long(std::ceil(em * double(font_size) * (bold ? 1.1 : 1.)));
+}
+
 // The drawing of a layout: its frame (SVG units, positions), its color scale, then the
 // parts of the document in order.
 class Svg_drawing
@@ -131,6 +164,7 @@ public:
     m_s.reserve(64 * m_layout.faces.size() + 8192);
     write_head();
     write_faces();
+    write_frame_and_outlines();
     write_border_and_seams();
     // Circles around the flipped faces (which may be too small to see), unless there are too
     // many of them.
@@ -152,15 +186,15 @@ private:
   {
     const Svg_layout& layout = m_layout;
     double umin = 0., umax = 1., vmin = 0., vmax = 1.;
-    if(!layout.uv.empty())
+    if(!layout.uv.empty() && !layout.unit_square)
     {
       umin = umax = layout.uv[0][0];
       vmin = vmax = layout.uv[0][1];
-      for(const auto& p : layout.uv)
-      {
-        umin = (std::min)(umin, p[0]); umax = (std::max)(umax, p[0]);
-        vmin = (std::min)(vmin, p[1]); vmax = (std::max)(vmax, p[1]);
-      }
+    }
+    for(const auto& p : layout.uv)  // the unit square, or the layout's bounding box
+    {
+      umin = (std::min)(umin, p[0]); umax = (std::max)(umax, p[0]);
+      vmin = (std::min)(vmin, p[1]); vmax = (std::max)(vmax, p[1]);
     }
     m_w = (std::max)(1L, std::lround((umax - umin) * unit));
     const long h = (std::max)(1L, std::lround((vmax - vmin) * unit));
@@ -168,6 +202,7 @@ private:
     const long caption_height = has_caption ? pad + line * long(1 + layout.caption.size()) + pad / 2 : pad;
     m_x0 = pad;
     m_y0 = caption_height;
+    m_frame = {m_x0 + std::lround((0. - umin) * unit), m_y0 + std::lround((vmax - 1.) * unit)};
     // UV -> SVG, v upwards
     m_xy.resize(layout.uv.size());
     for(std::size_t i = 0; i < m_xy.size(); ++i)
@@ -175,8 +210,34 @@ private:
 
     m_legend_x = m_x0 + m_w + pad;
     const long legend_height = 2 * line + bar_height + 5 * line;
-    m_width = layout.legend ? m_legend_x + legend_width : m_x0 + m_w + pad;
+    m_width = layout.legend ? m_legend_x + (std::max)(legend_width, widest_legend_entry() + pad) : m_x0 + m_w + pad;
     m_height = m_y0 + (layout.legend ? (std::max)(h, legend_height) : h) + pad;
+    // the caption inside the picture
+    if(!layout.title.empty())
+      m_width = (std::max)(m_width, 2 * pad + text_width(layout.title, 260, true));
+    for(const std::string& c : layout.caption)
+      m_width = (std::max)(m_width, 2 * pad + text_width(c, 210));
+  }
+
+  // The width the legend's texts take right of its left edge (the tick labels excepted:
+  // numbers of a few characters).
+  long widest_legend_entry() const
+  {
+    const Svg_layout& layout = m_layout;
+    long w = (std::max)(text_width(layout.color_title, 210), text_width(layout.color_note, 170));
+    std::vector<std::string> entries;
+    if(layout.layout_marks)
+      entries = {"flipped faces: " + std::to_string(layout.faces.size()), "(too many to circle)",
+                 "border (" + std::to_string(layout.border.size()) + " vertices)", "center"};
+    else
+      entries = {layout.frame_label};
+    if(!layout.seams.empty())
+      entries.push_back("seams (" + std::to_string(layout.seam_edges) + " edges, both sides)");
+    if(!layout.outline_label.empty())
+      entries.push_back(layout.outline_label);
+    for(const std::string& e : entries)
+      w = (std::max)(w, 520 + text_width(e, 190));
+    return w;
   }
 
   // Color scale: log10 of the per-face angle distortion between its 2nd and 98th percentiles
@@ -224,27 +285,42 @@ private:
     const Svg_layout& layout = m_layout;
     m_paths.resize(static_cast<std::size_t>(bins));
     double edge_sum = 0.;
-    for(std::size_t f = 0; f < layout.faces.size(); ++f)
+    const bool polygons = !layout.polygon_end.empty();
+    const std::size_t n = polygons ? layout.polygon_end.size() : layout.faces.size();
+    std::vector<std::size_t> corners;
+    for(std::size_t f = 0; f < n; ++f)
     {
-      const auto& t = layout.faces[f];
-      const auto &a = m_xy[t[0]], &b = m_xy[t[1]], &c = m_xy[t[2]];
+      corners.clear();
+      if(polygons)
+        for(std::size_t k = (f == 0 ? 0 : layout.polygon_end[f - 1]); k < layout.polygon_end[f]; ++k)
+          corners.push_back(k);
+      else
+        corners.assign(layout.faces[f].begin(), layout.faces[f].end());
+      if(corners.empty())
+        continue;
       const bool is_flipped = layout.face_flipped[f];
       std::string& d = is_flipped ? m_flipped_path : m_paths[std::size_t(bin_of(layout.face_angle_distortion[f]))];
+      const auto& a = m_xy[corners[0]];
       d += 'M';
       append_coordinate(d, a[0]); append_coordinate(d, a[1]);
       d += 'l';
-      append_coordinate(d, b[0] - a[0]); append_coordinate(d, b[1] - a[1]);
-      append_coordinate(d, c[0] - b[0]); append_coordinate(d, c[1] - b[1]);
+      std::array<long, 2> sum = a;
+      for(std::size_t k = 1; k < corners.size(); ++k)
+      {
+        const auto &p = m_xy[corners[k - 1]], &q = m_xy[corners[k]];
+        append_coordinate(d, q[0] - p[0]); append_coordinate(d, q[1] - p[1]);
+        sum = {sum[0] + q[0], sum[1] + q[1]};
+      }
       d += 'z';
-      edge_sum += std::hypot(double(b[0] - a[0]), double(b[1] - a[1]));
+      if(corners.size() > 1)
+        edge_sum += std::hypot(double(m_xy[corners[1]][0] - a[0]), double(m_xy[corners[1]][1] - a[1]));
       if(is_flipped && ++m_flipped <= max_markers)
-        m_markers += "<circle cx=\"" + std::to_string((a[0] + b[0] + c[0]) / 3) + "\" cy=\"" +
-                     std::to_string((a[1] + b[1] + c[1]) / 3) + "\" r=\"120\"/>";
+        m_markers += "<circle cx=\"" + std::to_string(sum[0] / long(corners.size())) + "\" cy=\"" +
+                     std::to_string(sum[1] / long(corners.size())) + "\" r=\"120\"/>";
     }
     // Draw the mesh edges when they are at least 6 pixels long on average; otherwise stroke
     // each face with its own color to hide the hairline seams of anti-aliasing.
-    m_wireframe = (layout.wireframe >= 0) ? layout.wireframe > 0
-                                          : !layout.faces.empty() && edge_sum / double(layout.faces.size()) >= 60.;
+    m_wireframe = (layout.wireframe >= 0) ? layout.wireframe > 0 : n > 0 && edge_sum / double(n) >= 60.;
     m_border_width = std::lround(22. * layout.mark_scale);
   }
 
@@ -286,6 +362,29 @@ private:
            m_flipped_path + "\"/>\n";
     }
   }
+
+  // The frame of the unit square, and the chart outlines.
+  void write_frame_and_outlines()
+  {
+    std::string& s = m_s;
+    if(m_layout.unit_square)
+      s += "<rect x=\"" + std::to_string(m_frame[0]) + "\" y=\"" + std::to_string(m_frame[1]) + "\" width=\"" +
+           std::to_string(std::lround(unit)) + "\" height=\"" + std::to_string(std::lround(unit)) +
+           "\" fill=\"none\" stroke=\"#888888\" stroke-width=\"12\"/>\n";
+    if(m_layout.outlines.empty())
+      return;
+    s += "<path fill=\"none\" stroke=\"#000000\" stroke-width=\"" + std::to_string(outline_width()) +
+         "\" stroke-linecap=\"round\" d=\"";
+    for(const std::array<std::size_t, 2>& e : m_layout.outlines)
+    {
+      const auto &p = m_xy[e[0]], &q = m_xy[e[1]];
+      s += "M" + std::to_string(p[0]) + " " + std::to_string(p[1]) + "L" + std::to_string(q[0]) + " " +
+           std::to_string(q[1]);
+    }
+    s += "\"/>\n";
+  }
+
+  long outline_width() const { return std::lround(12. * m_layout.mark_scale); }
 
   // The border, a closed polyline, and the seams: on the border, both sides of every seam
   // edge, in orange.
@@ -357,10 +456,10 @@ private:
   {
     std::string& s = m_s;
     long y = m_y0;
-    s += "<text x=\"" + std::to_string(m_legend_x) + "\" y=\"" + std::to_string(y + 200) +
-         "\" font-size=\"210\">angle distortion per face</text>\n";
+    s += "<text x=\"" + std::to_string(m_legend_x) + "\" y=\"" + std::to_string(y + 200) + "\" font-size=\"210\">" +
+         xml_escaped(m_layout.color_title) + "</text>\n";
     s += "<text x=\"" + std::to_string(m_legend_x) + "\" y=\"" + std::to_string(y + 200 + line - 40) +
-         "\" font-size=\"170\" fill=\"#444444\">(mean of its 3 corners, log scale)</text>\n";
+         "\" font-size=\"170\" fill=\"#444444\">" + xml_escaped(m_layout.color_note) + "</text>\n";
     y += 2 * line + 100;
     const long bar_top = y;
     for(int b = 0; b < bins; ++b)
@@ -420,6 +519,11 @@ private:
   // Legend: the other marks.
   void write_marks()
   {
+    if(!m_layout.layout_marks)
+    {
+      write_atlas_marks();
+      return;
+    }
     std::string& s = m_s;
     const long legend_x = m_legend_x;
     long y = m_y0 + 2 * line + 100 + bar_height + line + 50;
@@ -450,7 +554,27 @@ private:
     legend_text(y, "center");
   }
 
+  // Legend of an atlas: the frame and the chart outlines.
+  void write_atlas_marks()
+  {
+    long y = m_y0 + 2 * line + 100 + bar_height + line + 50;
+    if(m_layout.unit_square)
+    {
+      m_s += "<rect x=\"" + std::to_string(m_legend_x + 60) + "\" y=\"" + std::to_string(y - 100) +
+             "\" width=\"280\" height=\"200\" fill=\"none\" stroke=\"#888888\" stroke-width=\"12\"/>\n";
+      legend_text(y, m_layout.frame_label);
+      y += line + 100;
+    }
+    if(!m_layout.outline_label.empty())
+    {
+      m_s += "<path d=\"M" + std::to_string(m_legend_x) + " " + std::to_string(y) + "h400\" stroke=\"#000000\" stroke-width=\"" +
+             std::to_string(outline_width()) + "\"/>\n";
+      legend_text(y, m_layout.outline_label);
+    }
+  }
+
   const Svg_layout& m_layout;
+  std::array<long, 2> m_frame = {0, 0};      // the top left corner of the unit square
   std::vector<std::array<long, 2> > m_xy;    // per UV: its SVG position
   long m_w = 0, m_x0 = 0, m_y0 = 0;          // width and top left corner of the layout
   long m_legend_x = 0, m_width = 0, m_height = 0;

@@ -7,7 +7,8 @@
 //
 // Author(s)     : The measured boundary parameterization authors
 
-// The SVG output of the measured_parameterization program (svg_writer.h). No CGAL here.
+// The SVG output of the measured_parameterization program (svg_writer.h): the atlas, or the
+// single chart. No CGAL here.
 
 #include "svg_writer.h"
 
@@ -15,9 +16,17 @@
 #include "svg_layout.h"
 #include "text_output.h"
 
+#include <algorithm>
+#include <array>
+#include <cstddef>
 #include <limits>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace mbp_cli {
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
 
 namespace {
 
@@ -45,10 +54,79 @@ std::string caption_of_quality(const Quality& q)
          std::to_string(q.flipped_faces);
 }
 
+// The outlines of the charts: the edges of their polygons that no other polygon of the same
+// chart has with the same UVs (either direction), as corner pairs; edges of zero length left
+// out. By a sort of the edges on (chart, UV of one end, UV of the other).
+std::vector<std::array<std::size_t, 2> > chart_outlines(const Atlas_result& a)
+{
+  const Polygon_soup& soup = a.soup;
+  struct Edge
+  {
+    std::size_t chart, from, to;  // corners; `from` has the smaller UV
+  };
+  std::vector<Edge> edges;
+  edges.reserve(a.uv.size());
+  for(std::size_t i = 0; i < soup.number_of_faces(); ++i)
+  {
+    const std::size_t begin = soup.face_begin(i), n = soup.face_size(i);
+    for(std::size_t k = 0; k < n && n > 1; ++k)
+    {
+      std::size_t from = begin + k, to = begin + (k + 1) % n;
+      if(a.uv[from] == a.uv[to])
+        continue;
+      if(a.uv[to] < a.uv[from])
+        std::swap(from, to);
+      edges.push_back({a.polygon_chart[i], from, to});
+    }
+  }
+  auto key = [&a](const Edge& e) { return std::make_tuple(e.chart, a.uv[e.from], a.uv[e.to]); };
+  std::sort(edges.begin(), edges.end(), [&key](const Edge& x, const Edge& y) { return key(x) < key(y); });
+  std::vector<std::array<std::size_t, 2> > outlines;
+  for(std::size_t e = 0, next = 0; e < edges.size(); e = next)
+  {
+    for(next = e + 1; next < edges.size() && key(edges[next]) == key(edges[e]);)
+      ++next;
+    if(next == e + 1)
+      outlines.push_back({edges[e].from, edges[e].to});
+  }
+  return outlines;
+}
+
+// The picture of an atlas: the unit square framed, the input's polygons at their UVs colored
+// by their area distortion, the charts outlined, the caption and the legend.
+std::string atlas_picture(const Run_facts& f)
+{
+  const Atlas_result& a = f.result.atlas;
+  const SMP::Atlas_report& r = a.report;
+  Svg_layout picture;
+  picture.uv = a.uv;
+  for(std::size_t i = 0; i < a.soup.number_of_faces(); ++i)
+    picture.polygon_end.push_back(a.soup.face_end[i]);
+  picture.face_angle_distortion = a.polygon_area_distortion;
+  picture.face_flipped.assign(a.soup.number_of_faces(), false);
+  picture.outlines = chart_outlines(a);
+  picture.unit_square = true;
+  picture.layout_marks = false;
+  picture.center = picture.uv.size();  // none
+  picture.frame_label = "texture (" + std::to_string(f.options.resolution) + " texels)";
+  picture.outline_label = "chart outlines (" + std::to_string(r.charts.size()) + ")";
+  picture.color_title = "area distortion per polygon";
+  picture.color_note = "|log(UV area / 3D area)|, log scale";
+  picture.title = f.mesh_name;
+  picture.caption.push_back(std::to_string(a.soup.points.size()) + " points, " +
+                            std::to_string(a.soup.number_of_faces()) + " polygons: " + atlas_charts_text(f));
+  picture.caption.push_back("repairs: " + repair_list(r.repair));
+  picture.caption.push_back("area spread " + rounded(r.area_spread) + " (after one scale of the atlas),  angle distortion " +
+                            rounded(r.angle_distortion));
+  return svg_document(picture);
+}
+
 } // namespace
 
 std::string svg_picture(const Run_facts& f)
 {
+  if(f.options.mode == Mode::atlas)
+    return atlas_picture(f);
   const Uv_layout& layout = f.result.layout;
   const Options& o = f.options;
   Svg_layout picture;

@@ -8,7 +8,7 @@
 // Author(s)     : The measured boundary parameterization authors
 
 // The SVG output of the measured_parameterization program (--svg, svg_writer.cpp): the
-// picture of svg_layout.h of the run's layout, with its caption. No CGAL here.
+// picture of svg_layout.h of the run's atlas or layout, with its caption. No CGAL here.
 
 #ifndef MBP_CLI_SVG_WRITER_H
 #define MBP_CLI_SVG_WRITER_H

@@ -13,10 +13,12 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include "atlas_soups.h"
 #include "test_support.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
@@ -37,6 +39,7 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -360,13 +363,15 @@ void check_obj_against_mesh(const Obj& obj, const Mesh& mesh)
 
 BOOST_AUTO_TEST_CASE(default_run_writes_obj_svg_and_summary)
 {
+  // the single chart of the default mesh (--single-chart: the program's default is the atlas,
+  // default_run_is_an_atlas)
   const std::string path = default_mesh_path();
   Mesh mesh;
   mbp_test::read_mesh(path, mesh);
   const std::size_t border_size = border_loop(mesh).size();
 
   Scratch scratch;
-  const Run r = scratch.run({"--svg=layout.svg"});  // no INPUT, no OUTPUT
+  const Run r = scratch.run({"--svg=layout.svg", "--single-chart"});  // no INPUT, no OUTPUT
   BOOST_REQUIRE_EQUAL(r.code, 0);
   const std::string obj_name = fs::path(path).stem().string() + "_uv.obj";
   BOOST_TEST((scratch.files() == std::set<std::string>{obj_name, "layout.svg"}));
@@ -404,7 +409,7 @@ BOOST_AUTO_TEST_CASE(default_run_writes_obj_svg_and_summary)
 
   // --output names the OBJ of the default input
   Scratch named;
-  BOOST_REQUIRE_EQUAL(named.run({"--output=named.obj"}).code, 0);
+  BOOST_REQUIRE_EQUAL(named.run({"--output=named.obj", "--single-chart"}).code, 0);
   BOOST_TEST((named.files() == std::set<std::string>{"named.obj"}));
   check_obj_against_mesh(read_obj(named.work / "named.obj"), mesh);
 }
@@ -565,14 +570,15 @@ BOOST_AUTO_TEST_CASE(geodesic_centers_and_distances)
 
 BOOST_AUTO_TEST_CASE(automatic_border)
 {
-  // --border=auto (the default): every layout tried is listed, the kept one is the valid
+  // --border=auto (the default of --single-chart): every layout tried is listed, the kept one is the valid
   // candidate of lowest angle distortion, it is the layout written, and it is never worse
   // than the circle or the paper's measured border run on its own
   const std::string path = default_mesh_path();
   Scratch scratch;
-  const Run r = scratch.run({path, "out.obj", "--json"});
+  const Run r = scratch.run({path, "out.obj", "--json", "--single-chart"});
   BOOST_REQUIRE_EQUAL(r.code, 0);
   const boost::property_tree::ptree j = parse_json(r.out);
+  BOOST_TEST(j.get<std::string>("mode") == "single-chart");
   BOOST_TEST(j.get<std::string>("border_choice.mode") == "auto");
   BOOST_TEST(j.get<std::string>("border_distance") == "fast-marching");  // auto's measured member
   const boost::property_tree::ptree& candidates = j.get_child("border_choice.candidates");
@@ -636,7 +642,7 @@ BOOST_AUTO_TEST_CASE(automatic_border)
     BOOST_TEST(std::abs(d - (b == "circle" ? circle : conformal)) <= 1e-9 * d + 1e-15);
   }
   // the summary names the kept border; the OBJ says how it was chosen
-  const Run t = scratch.run({path, "text.obj"});
+  const Run t = scratch.run({path, "text.obj", "--single-chart"});
   BOOST_REQUIRE_EQUAL(t.code, 0);
   BOOST_TEST(contains(t.out, "| border auto: conformal"), t.out);
   BOOST_TEST(contains(t.out, std::to_string(candidates.size()) + " layouts tried"), t.out);
@@ -684,7 +690,7 @@ BOOST_AUTO_TEST_CASE(reads_off_obj_ply_and_stl)
 BOOST_AUTO_TEST_CASE(generated_mesh_when_the_default_mesh_is_missing)
 {
   Scratch scratch;
-  const Run r = scratch.run({"--json"}, MBP_CLI_NO_DEFAULT_MESH_PROGRAM);
+  const Run r = scratch.run({"--json", "--single-chart"}, MBP_CLI_NO_DEFAULT_MESH_PROGRAM);
   BOOST_REQUIRE_EQUAL(r.code, 0);
   BOOST_TEST(contains(r.err, "does not exist"));
   BOOST_TEST(contains(r.err, "generated"));
@@ -718,7 +724,7 @@ BOOST_AUTO_TEST_CASE(isolated_vertices_are_left_out)
   off.insert(off.find("3 0 1 4"), "5 5 5\n");
   Scratch scratch;
   scratch.write("grid.off", off);
-  Run r = scratch.run({"grid.off", "out.obj", "--json"});
+  Run r = scratch.run({"grid.off", "out.obj", "--json", "--single-chart"});
   BOOST_REQUIRE_EQUAL(r.code, 0);
   BOOST_TEST(contains(r.err, "in no face"));
   BOOST_TEST(parse_json(r.out).get<std::size_t>("isolated_vertices") == 1u);
@@ -740,7 +746,8 @@ BOOST_AUTO_TEST_CASE(help)
   BOOST_TEST(r.code == 0);
   BOOST_TEST(contains(r.out, "usage: measured_parameterization"));
   for(const char* option : {"--center=vertex:N", "--distance=poisson", "--svg=FILE", "--json", "--solver", "_uv.obj",
-                            "--seams=FILE.selection.txt", "Seam_mesh", "--border=auto"})
+                            "--seams=FILE.selection.txt", "Seam_mesh", "--border=auto", "--atlas", "--single-chart",
+                            "--resolution=N", "--gutter=N", "g chart_K"})
     BOOST_TEST(contains(r.out, option), option);
   BOOST_TEST(scratch.files().empty());
 }
@@ -932,7 +939,7 @@ BOOST_AUTO_TEST_CASE(seams_cut_a_closed_mesh)
   // without seams the JSON says so, with one UV per vertex
   Scratch plain;
   plain.write("grid.off", grid_off);
-  const Run p = plain.run({"grid.off", "--json"});
+  const Run p = plain.run({"grid.off", "--json", "--single-chart"});
   BOOST_REQUIRE_EQUAL(p.code, 0);
   const boost::property_tree::ptree pj = parse_json(p.out);
   BOOST_TEST(pj.get<std::string>("seams") == "null");
@@ -942,8 +949,10 @@ BOOST_AUTO_TEST_CASE(seams_cut_a_closed_mesh)
 
 MBP_TIERED_TEST_CASE(messy_real_meshes_fail_cleanly)
 {
-  // messy meshes: a message naming the problem, exit 1, nothing written (closed, holed and
-  // higher-genus meshes get automatic seams: not_a_disk_real_meshes_get_automatic_seams).
+  // messy meshes with --single-chart: a message naming the problem, exit 1, nothing written
+  // (closed, holed and higher-genus meshes get automatic seams:
+  // not_a_disk_real_meshes_get_automatic_seams; the atlas takes them all:
+  // messy_real_meshes_get_an_atlas).
   // Core tier: CGAL's data meshes; extended tier: the other MESSY meshes of the project's
   // meshes (PROVENANCE.md there; the others are copies of CGAL's).
   // doc/Surface_mesh_parameterization/hardening.md has the table.
@@ -959,7 +968,7 @@ MBP_TIERED_TEST_CASE(messy_real_meshes_fail_cleanly)
     {
       const std::string path = mbp_test::tier_mesh(tier, c.first);
       Scratch scratch;
-      const Run r = scratch.run({path, "out.obj", "--svg=out.svg", "--json"});
+      const Run r = scratch.run({path, "out.obj", "--svg=out.svg", "--json", "--single-chart"});
       BOOST_TEST(r.code == 1);
       BOOST_TEST(contains(r.err, "error: " + path + ": "), r.err);
       BOOST_TEST(contains(r.err, c.second), r.err);
@@ -1033,7 +1042,7 @@ BOOST_AUTO_TEST_CASE(seams_on_a_torus)
     // without seams: automatic seams (two loops)
     Scratch scratch;
     scratch.write("torus.off", off_text(soup));
-    const Run r = scratch.run({"torus.off", "out.obj"});
+    const Run r = scratch.run({"torus.off", "out.obj", "--single-chart"});
     BOOST_TEST(r.code == 0);
     BOOST_TEST(contains(r.out, "| automatic seams "), r.out);
     BOOST_TEST((scratch.files() == std::set<std::string>{"torus.off", "out.obj"}));
@@ -1110,19 +1119,20 @@ std::vector<Bad_case> bad_cases()
     return args;
   };
   std::vector<Bad_case> cases = {
-    {"quad mesh", {{"quads.off", quads}}, with({"quads.off"}), 1, {"not triangular", "4 vertices"}},
+    // what --single-chart refuses and the atlas repairs (atlas_of_soups_with_defects)
+    {"quad mesh", {{"quads.off", quads}}, with({"quads.off", "--single-chart"}), 1, {"not triangular", "4 vertices"}},
     {"NaN coordinate (text)", {{"nan.off", nan_grid}}, with({"nan.off"}), 1, {"non-finite", "'nan'", "line 7"}},
     {"NaN coordinate (binary)", {{"nan.ply", binary_ply_with_nan()}}, with({"nan.ply"}), 1, {"non-finite", "vertex 4"}},
     {"infinite coordinate", {{"inf.obj", inf_obj}}, with({"inf.obj"}), 1, {"non-finite", "'inf'"}},
-    {"zero-area triangle", {{"flat.off", zero_area}}, with({"flat.off"}), 1, {"zero area", "face 0"}},
+    {"zero-area triangle", {{"flat.off", zero_area}}, with({"flat.off", "--single-chart"}), 1, {"zero area", "face 0"}},
     {"nonexistent file", {}, with({"missing.off"}), 1, {"missing.off", "no such file"}},
     {"directory", {}, with({"."}), 1, {"directory"}},
     {"empty file", {{"empty.off", ""}}, with({"empty.off"}), 1, {"empty"}},
     {"not a mesh file", {{"text.off", "hello world\n"}}, with({"text.off"}), 1, {"cannot read it", "OFF keyword"}},
     {"unsupported extension", {{"grid.xyz", grid}}, with({"grid.xyz"}), 1, {"unsupported", ".xyz"}},
     {"no faces", {{"points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"}}, with({"points.off"}), 1, {"no faces"}},
-    {"non-manifold", {{"fin.off", non_manifold}}, with({"fin.off"}), 1, {"not a polygon mesh", "manifold"}},
-    {"two components", {{"two.off", two_components}}, with({"two.off"}), 1, {"2 connected components"}},
+    {"non-manifold", {{"fin.off", non_manifold}}, with({"fin.off", "--single-chart"}), 1, {"not a polygon mesh", "manifold"}},
+    {"two components", {{"two.off", two_components}}, with({"two.off", "--single-chart"}), 1, {"2 connected components"}},
     // found by fuzzing (test/fuzz): CGAL 5.5 builds the mesh with unchecked indices, and sizes
     // its containers from the counts of the file
     {"face index out of range (OBJ)", {{"far.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"}}, with({"far.obj"}), 1,
@@ -1346,17 +1356,18 @@ BOOST_AUTO_TEST_CASE(reads_binary_ply_and_stl)
   scratch.write("little.ply", binary_ply(soup, false));
   scratch.write("big.ply", binary_ply(soup, true));
   scratch.write("disk.stl", binary_stl(soup));
-  BOOST_REQUIRE_EQUAL(scratch.run({"disk.off", "off.obj"}).code, 0);
+  // a single chart (--single-chart): one UV per vertex (the atlas: atlas_of_soups_with_defects)
+  BOOST_REQUIRE_EQUAL(scratch.run({"disk.off", "off.obj", "--single-chart"}).code, 0);
   const std::string reference = text_of(scratch.work / "off.obj");
   auto body = [](const std::string& obj) { return obj.substr(obj.find("\nv ")); };  // without the comments
   for(const std::string name : {"little.ply", "big.ply"})
     BOOST_TEST_CONTEXT(name)
     {
-      const Run r = scratch.run({name, name + ".obj"});
+      const Run r = scratch.run({name, name + ".obj", "--single-chart"});
       BOOST_REQUIRE_EQUAL(r.code, 0);
       BOOST_TEST(body(text_of(scratch.work / (name + ".obj"))) == body(reference));
     }
-  const Run r = scratch.run({"disk.stl", "stl.obj", "--json"});
+  const Run r = scratch.run({"disk.stl", "stl.obj", "--json", "--single-chart"});
   BOOST_REQUIRE_EQUAL(r.code, 0);
   const Obj obj = read_obj(scratch.work / "stl.obj");
   BOOST_TEST(obj.v.size() == soup.points.size());
@@ -1393,7 +1404,7 @@ BOOST_AUTO_TEST_CASE(reads_binary_ply_and_stl)
     separate.faces.push_back({std::size_t(3 * t), std::size_t(3 * t + 1), std::size_t(3 * t + 2)});
   }
   scratch.write("separate.stl", binary_stl(separate));
-  const Run s = scratch.run({"separate.stl", "separate.obj"});
+  const Run s = scratch.run({"separate.stl", "separate.obj", "--single-chart"});
   BOOST_TEST(s.code == 1);
   BOOST_TEST(contains(s.err, "it has 400 connected components"), s.err);
 }
@@ -1413,6 +1424,7 @@ BOOST_AUTO_TEST_CASE(messages_name_the_actual_problem)
   {
     std::string name, file, contents;
     std::vector<std::string> expected, wrong;
+    bool single_chart = false;  // a problem of --single-chart (the atlas repairs it)
   };
   const std::vector<Case> cases = {
     {"all vertices at one point", "point.off", one_point,
@@ -1428,11 +1440,11 @@ BOOST_AUTO_TEST_CASE(messages_name_the_actual_problem)
      "OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
      {"line 2", "the OFF counts line '3 1' has 2 numbers; it needs exactly three"}, {"more than the three"}},
     {"face using a vertex twice", "twice.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 0 1\n",
-     {"not a polygon mesh", "face 1 uses vertex 0 twice"}, {}},
+     {"not a polygon mesh", "face 1 uses vertex 0 twice"}, {}, true},
     {"inconsistent orientation", "flip.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 3 2\n",
-     {"not a polygon mesh", "faces 0 and 1 traverse the edge 2-0 in the same direction"}, {}},
+     {"not a polygon mesh", "faces 0 and 1 traverse the edge 2-0 in the same direction"}, {}, true},
     {"edge of three faces", "fin.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 -1 1\n3 0 1 2\n3 0 2 3\n3 0 2 4\n",
-     {"the edge 0-2 has more than two faces (faces 0, 1 and 2)"}, {}},
+     {"the edge 0-2 has more than two faces (faces 0, 1 and 2)"}, {}, true},
     {"unknown OBJ statement", "text.obj", "v 0 0 0\nhello world\n", {"line 2", "'hello' is not an OBJ statement"}, {}},
     {"binary STL of the wrong size", "short.stl", std::string(84, '\0') + "xx",
      {"has 84 bytes, but this one has 86"}, {}},
@@ -1445,7 +1457,10 @@ BOOST_AUTO_TEST_CASE(messages_name_the_actual_problem)
     {
       Scratch scratch;
       scratch.write(c.file, c.contents);
-      const Run r = scratch.run({c.file, "out.obj", "--svg=out.svg"});
+      std::vector<std::string> args{c.file, "out.obj", "--svg=out.svg"};
+      if(c.single_chart)
+        args.push_back("--single-chart");
+      const Run r = scratch.run(args);
       BOOST_TEST(r.code == 1);
       BOOST_TEST(contains(r.err, "error: " + c.file + ": "), r.err);
       for(const std::string& m : c.expected)
@@ -1464,7 +1479,7 @@ BOOST_AUTO_TEST_CASE(huge_and_tiny_coordinates_are_parameterized)
   const mbp_test::Soup soup = mbp_test::bumpy_disk();
   Scratch scratch;
   scratch.write("unit.off", exact_off_text(soup));
-  BOOST_REQUIRE_EQUAL(scratch.run({"unit.off", "unit.obj"}).code, 0);
+  BOOST_REQUIRE_EQUAL(scratch.run({"unit.off", "unit.obj", "--single-chart"}).code, 0);
   const Obj reference = read_obj(scratch.work / "unit.obj");
   for(const double scale : {1e300, 1e-300, 3e160})
     BOOST_TEST_CONTEXT("scale " << scale)
@@ -1474,7 +1489,7 @@ BOOST_AUTO_TEST_CASE(huge_and_tiny_coordinates_are_parameterized)
         for(double& c : p)
           c *= scale;
       scratch.write("scaled.off", exact_off_text(scaled));
-      const Run r = scratch.run({"scaled.off", "scaled.obj", "--json"});
+      const Run r = scratch.run({"scaled.off", "scaled.obj", "--json", "--single-chart"});
       BOOST_REQUIRE_EQUAL(r.code, 0);
       const Obj obj = read_obj(scratch.work / "scaled.obj");
       BOOST_REQUIRE_EQUAL(obj.v.size(), scaled.points.size());
@@ -1601,7 +1616,7 @@ BOOST_AUTO_TEST_CASE(failed_publish_keeps_previous_outputs)
   scratch.write("out.obj", "previous obj\n");
   fs::create_directory(scratch.work / "pictures");
   scratch.write("pictures/out.svg", "previous svg\n");
-  const Run r = scratch.run_stopped({"grid.off", "out.obj", "--svg=pictures/out.svg"}, [&](pid_t pid) {
+  const Run r = scratch.run_stopped({"grid.off", "out.obj", "--svg=pictures/out.svg", "--single-chart"}, [&](pid_t pid) {
     BOOST_TEST(temporaries_in(scratch.work) == 1u);  // the OBJ's; the SVG's is in pictures/
     fs::rename(scratch.work / "pictures", scratch.work / "moved");
     ::kill(pid, SIGCONT);
@@ -1617,7 +1632,7 @@ BOOST_AUTO_TEST_CASE(failed_publish_keeps_previous_outputs)
   Scratch fresh;
   fresh.write("grid.off", grid_off);
   fs::create_directory(fresh.work / "pictures");
-  const Run n = fresh.run_stopped({"grid.off", "new.obj", "--svg=pictures/out.svg"}, [&](pid_t pid) {
+  const Run n = fresh.run_stopped({"grid.off", "new.obj", "--svg=pictures/out.svg", "--single-chart"}, [&](pid_t pid) {
     fs::rename(fresh.work / "pictures", fresh.work / "moved");
     ::kill(pid, SIGCONT);
   });
@@ -1625,7 +1640,8 @@ BOOST_AUTO_TEST_CASE(failed_publish_keeps_previous_outputs)
   BOOST_TEST((fresh.files() == std::set<std::string>{"grid.off", "moved"}));
 
   // the same run not interrupted publishes both
-  const Run ok = scratch.run_stopped({"grid.off", "out.obj", "--svg=moved/out.svg"}, [](pid_t pid) { ::kill(pid, SIGCONT); });
+  const Run ok = scratch.run_stopped({"grid.off", "out.obj", "--svg=moved/out.svg", "--single-chart"},
+                                     [](pid_t pid) { ::kill(pid, SIGCONT); });
   BOOST_TEST(ok.code == 0);
   BOOST_TEST(read_obj(scratch.work / "out.obj").f.size() == 8u);
   BOOST_TEST(contains(text_of(scratch.work / "moved/out.svg"), "</svg>"));
@@ -1662,7 +1678,7 @@ BOOST_AUTO_TEST_CASE(long_output_names)
   const std::string obj = std::string(246, 'o') + ".obj", svg = std::string(246, 's') + ".svg";
   Scratch scratch;
   scratch.write("grid.off", grid_off);
-  const Run r = scratch.run({"grid.off", obj, "--svg=" + svg});
+  const Run r = scratch.run({"grid.off", obj, "--svg=" + svg, "--single-chart"});
   BOOST_REQUIRE_EQUAL(r.code, 0);
   BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off", obj, svg}));
   BOOST_TEST(read_obj(scratch.work / obj).f.size() == 8u);
@@ -1939,7 +1955,7 @@ BOOST_AUTO_TEST_CASE(small_closed_and_punctured_meshes_get_automatic_seams)
   Scratch scratch;
   scratch.write("octahedron.off", "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
                                   "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n");
-  const Run r = scratch.run({"octahedron.off", "out.obj", "--json"});
+  const Run r = scratch.run({"octahedron.off", "out.obj", "--json", "--single-chart"});
   BOOST_REQUIRE_EQUAL(r.code, 0);
   const boost::property_tree::ptree j = parse_json(r.out);
   BOOST_TEST(j.get<int>("automatic_seams.cones") == 2);
@@ -1948,7 +1964,7 @@ BOOST_AUTO_TEST_CASE(small_closed_and_punctured_meshes_get_automatic_seams)
   BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
   // a punctured torus: two arcs from its border around the handle
   scratch.write("torus.off", off_text(mbp_test::punctured_torus()));
-  const Run t = scratch.run({"torus.off", "torus.obj", "--json"});
+  const Run t = scratch.run({"torus.off", "torus.obj", "--json", "--single-chart"});
   BOOST_REQUIRE_EQUAL(t.code, 0);
   const boost::property_tree::ptree tj = parse_json(t.out);
   BOOST_TEST(tj.get<int>("automatic_seams.genus") == 1);
@@ -2040,6 +2056,609 @@ BOOST_AUTO_TEST_CASE(equal_border_loops_are_chosen_by_the_library_rule)
       }
       BOOST_TEST(count == first_count);
       BOOST_TEST(start == first_start);
+    }
+}
+
+// ---------------------------------------------------------------- the atlas (issue 22, item 5)
+
+namespace {
+
+// The OBJ of an atlas, read here independently of the program: 'v', 'vt', 'f' with any number
+// of corners, each "v/vt", and the groups 'g chart_K'.
+struct Atlas_obj
+{
+  std::vector<std::array<double, 3> > v;
+  std::vector<std::array<double, 2> > vt;
+  std::vector<std::vector<std::size_t> > f, ft;  // per polygon: 'v' and 'vt' indices, 0-based
+  std::vector<long> chart;                        // per polygon: K of the last 'g chart_K' before it (-1: none)
+  std::size_t groups = 0;                         // 'g' lines
+  std::size_t repeated_groups = 0;                // 'g' lines naming the chart of the group before them
+  std::size_t other_lines = 0;                    // lines that are not v, vt, f, g, comments or empty
+};
+
+Atlas_obj read_atlas_obj(const fs::path& path)
+{
+  std::ifstream in(path);
+  BOOST_REQUIRE_MESSAGE(in.good(), "cannot open " << path);
+  Atlas_obj obj;
+  long chart = -1;
+  std::string line;
+  while(std::getline(in, line))
+  {
+    std::istringstream s(line);
+    std::string tag;
+    if(!(s >> tag) || tag[0] == '#')
+      continue;
+    if(tag == "v")
+    {
+      std::array<double, 3> p;
+      BOOST_REQUIRE_MESSAGE(s >> p[0] >> p[1] >> p[2], "bad line: " << line);
+      obj.v.push_back(p);
+    }
+    else if(tag == "vt")
+    {
+      std::array<double, 2> q;
+      BOOST_REQUIRE_MESSAGE(s >> q[0] >> q[1], "bad line: " << line);
+      obj.vt.push_back(q);
+    }
+    else if(tag == "g")
+    {
+      std::string name, more;
+      BOOST_REQUIRE_MESSAGE(s >> name && !(s >> more) && name.rfind("chart_", 0) == 0 && name.size() > 6 &&
+                              name.find_first_not_of("0123456789", 6) == std::string::npos,
+                            "not a group 'g chart_K': " << line);
+      const long k = std::stol(name.substr(6));
+      obj.repeated_groups += (k == chart) ? 1 : 0;
+      chart = k;
+      ++obj.groups;
+    }
+    else if(tag == "f")
+    {
+      std::vector<std::size_t> face, uv_face;
+      for(std::string corner; s >> corner;)
+      {
+        const std::size_t slash = corner.find('/');
+        BOOST_REQUIRE_MESSAGE(slash != std::string::npos && corner.find('/', slash + 1) == std::string::npos,
+                              "corner not 'v/vt': " << line);
+        const long index = std::stol(corner.substr(0, slash)), uv_index = std::stol(corner.substr(slash + 1));
+        BOOST_REQUIRE_MESSAGE(index >= 1 && uv_index >= 1, "bad index: " << line);
+        face.push_back(std::size_t(index - 1));
+        uv_face.push_back(std::size_t(uv_index - 1));
+      }
+      obj.f.push_back(face);
+      obj.ft.push_back(uv_face);
+      obj.chart.push_back(chart);
+    }
+    else
+      ++obj.other_lines;
+  }
+  for(std::size_t i = 0; i < obj.f.size(); ++i)
+    for(std::size_t k = 0; k < obj.f[i].size(); ++k)
+      BOOST_REQUIRE(obj.f[i][k] < obj.v.size() && obj.ft[i][k] < obj.vt.size());
+  return obj;
+}
+
+typedef std::array<std::array<double, 2>, 3> Uv_triangle;
+
+// Whether the interiors of two UV triangles overlap by more than `eps` (a separating axis
+// among their edge normals, projections that touch or overlap by less than `eps` count as
+// apart): an independent test, in plain double arithmetic.
+bool uv_triangles_overlap(const Uv_triangle& a, const Uv_triangle& b, double eps)
+{
+  for(const Uv_triangle* t : {&a, &b})
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const std::array<double, 2>& p = (*t)[k];
+      const std::array<double, 2>& q = (*t)[(k + 1) % 3];
+      const double length = std::hypot(q[0] - p[0], q[1] - p[1]);
+      if(!(length > 0.))
+        continue;
+      const double nx = (q[1] - p[1]) / length, ny = (p[0] - q[0]) / length;
+      double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+      double hi[2] = {-lo[0], -lo[1]};
+      for(int s = 0; s < 2; ++s)
+        for(const std::array<double, 2>& r : (s == 0 ? a : b))
+        {
+          const double x = nx * r[0] + ny * r[1];
+          lo[s] = (std::min)(lo[s], x);
+          hi[s] = (std::max)(hi[s], x);
+        }
+      if(hi[0] <= lo[1] + eps || hi[1] <= lo[0] + eps)
+        return false;
+    }
+  return true;
+}
+
+// The pairs of UV triangles of different charts whose interiors overlap (each polygon a fan
+// from its first corner; triangles of no area left out, and polygons through a point twice,
+// whose pieces may lie in different charts): every pair whose boxes share a cell of a 64 x 64
+// grid of the unit square is tested.
+std::size_t overlapping_chart_pairs(const Atlas_obj& obj)
+{
+  std::vector<Uv_triangle> triangles;
+  std::vector<long> chart;
+  for(std::size_t i = 0; i < obj.ft.size(); ++i)
+    for(std::size_t k = 1; k + 1 < obj.ft[i].size() &&
+                           std::set<std::size_t>(obj.f[i].begin(), obj.f[i].end()).size() == obj.f[i].size(); ++k)
+    {
+      const Uv_triangle t = {obj.vt[obj.ft[i][0]], obj.vt[obj.ft[i][k]], obj.vt[obj.ft[i][k + 1]]};
+      const double area = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
+      if(area != 0.)
+      {
+        triangles.push_back(t);
+        chart.push_back(obj.chart[i]);
+      }
+    }
+  const int n = 64;
+  std::vector<std::vector<std::size_t> > cells(std::size_t(n * n));
+  auto cell = [n](double x) { return std::clamp(int(std::floor(x * n)), 0, n - 1); };
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Uv_triangle& u = triangles[t];
+    const int x0 = cell((std::min)({u[0][0], u[1][0], u[2][0]})), x1 = cell((std::max)({u[0][0], u[1][0], u[2][0]}));
+    const int y0 = cell((std::min)({u[0][1], u[1][1], u[2][1]})), y1 = cell((std::max)({u[0][1], u[1][1], u[2][1]}));
+    for(int x = x0; x <= x1; ++x)
+      for(int y = y0; y <= y1; ++y)
+        cells[std::size_t(y * n + x)].push_back(t);
+  }
+  std::set<std::pair<std::size_t, std::size_t> > overlapping;
+  for(const std::vector<std::size_t>& c : cells)
+    for(std::size_t a = 0; a < c.size(); ++a)
+      for(std::size_t b = a + 1; b < c.size(); ++b)
+        if(chart[c[a]] != chart[c[b]] && uv_triangles_overlap(triangles[c[a]], triangles[c[b]], 1e-9))
+          overlapping.insert({(std::min)(c[a], c[b]), (std::max)(c[a], c[b])});
+  for(const auto& o : overlapping)
+    BOOST_TEST_MESSAGE("overlap: charts " << chart[o.first] << " and " << chart[o.second]);
+  return overlapping.size();
+}
+
+// Checks the atlas of `input` (the soup as the program reads it: points and polygons in file
+// order) from its OBJ and JSON: the input's points (exactly, with `exact_points`) and
+// polygons in their order, one 'vt' per corner in polygon order, every UV in [0,1]^2, the
+// groups, no overlap between charts, the JSON's counts. Returns the number of charts.
+std::size_t check_atlas(const Atlas_obj& obj, const boost::property_tree::ptree& j, const mbp_test::Soup& input,
+                        bool exact_points = true)
+{
+  BOOST_TEST(obj.other_lines == 0u);
+  BOOST_REQUIRE_EQUAL(obj.v.size(), input.points.size());
+  std::size_t moved = 0;
+  for(std::size_t i = 0; i < obj.v.size() && exact_points; ++i)
+    moved += (obj.v[i] == input.points[i]) ? 0 : 1;
+  BOOST_TEST(moved == 0u, moved << " 'v' lines differ from the input's points");
+
+  BOOST_REQUIRE_EQUAL(obj.f.size(), input.faces.size());
+  std::size_t corner = 0, other_polygons = 0, other_uvs = 0, outside = 0;
+  for(std::size_t i = 0; i < obj.f.size(); ++i)
+  {
+    other_polygons += (obj.f[i] == input.faces[i]) ? 0 : 1;
+    for(std::size_t uv : obj.ft[i])
+      other_uvs += (uv == corner++) ? 0 : 1;
+  }
+  BOOST_TEST(other_polygons == 0u, other_polygons << " polygons differ from the input's (size or points)");
+  BOOST_TEST(other_uvs == 0u, other_uvs << " corners without their own 'vt' in polygon order");
+  BOOST_TEST(obj.vt.size() == corner);
+  for(const auto& q : obj.vt)
+    outside += (std::isfinite(q[0]) && std::isfinite(q[1]) && q[0] >= 0. && q[0] <= 1. && q[1] >= 0. && q[1] <= 1.)
+                 ? 0 : 1;
+  BOOST_TEST(outside == 0u, outside << " UVs outside [0,1]^2");
+
+  // the groups: every polygon in one, named by an id of the JSON's charts, one line per change
+  BOOST_TEST(j.get<std::string>("mode") == "atlas");
+  const std::size_t charts = j.get<std::size_t>("chart_count");
+  BOOST_TEST(charts >= 1u);
+  BOOST_TEST(j.get_child("charts").size() == charts);
+  std::set<long> used;
+  for(long c : obj.chart)
+  {
+    BOOST_TEST((c >= 0 && std::size_t(c) < charts), "polygon in group chart_" << c << " of " << charts << " charts");
+    used.insert(c);
+  }
+  BOOST_TEST(obj.groups >= used.size());
+  BOOST_TEST(obj.repeated_groups == 0u);
+  BOOST_TEST(overlapping_chart_pairs(obj) == 0u);
+
+  BOOST_TEST(j.get<std::size_t>("points") == input.points.size());
+  BOOST_TEST(j.get<std::size_t>("polygons") == input.faces.size());
+  BOOST_TEST(j.get<std::size_t>("corners") == corner);
+  BOOST_TEST(j.get<std::size_t>("repair.input_polygons") == input.faces.size());
+  const double utilization = j.get<double>("utilization");
+  BOOST_TEST((utilization > 0. && utilization <= 1.), "utilization " << utilization);
+  BOOST_TEST(j.get<double>("texel_density") > 0.);
+  for(const auto& c : j.get_child("charts"))
+  {
+    BOOST_TEST(c.second.get<std::size_t>("faces") > 0u);
+    BOOST_TEST(c.second.get<double>("area_uv") >= 0.);
+    const std::string flattening = c.second.get<std::string>("flattening");
+    BOOST_TEST((flattening == "disk" || flattening == "seamed" || flattening == "unfolded"), flattening);
+  }
+  for(const char* time : {"read", "repair", "charts", "packing", "total", "write"})
+    BOOST_TEST(j.get<double>(std::string("times.") + time) >= 0., time);
+  return charts;
+}
+
+// A soup as an OBJ file ('v' and 'f' lines, exact coordinates).
+std::string obj_text(const mbp_test::Soup& soup)
+{
+  std::string s = "# a test soup\n";
+  for(const auto& p : soup.points)
+    s += "v " + exact_text(p[0]) + " " + exact_text(p[1]) + " " + exact_text(p[2]) + "\n";
+  for(const auto& f : soup.faces)
+  {
+    s += "f";
+    for(std::size_t i : f)
+      s += " " + std::to_string(i + 1);
+    s += "\n";
+  }
+  return s;
+}
+
+// A soup as an ASCII PLY file (exact coordinates).
+std::string ascii_ply_text(const mbp_test::Soup& soup)
+{
+  std::string s = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(soup.points.size()) +
+                  "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+                  std::to_string(soup.faces.size()) + "\nproperty list uchar int vertex_indices\nend_header\n";
+  for(const auto& p : soup.points)
+    s += exact_text(p[0]) + " " + exact_text(p[1]) + " " + exact_text(p[2]) + "\n";
+  for(const auto& f : soup.faces)
+  {
+    s += std::to_string(f.size());
+    for(std::size_t i : f)
+      s += " " + std::to_string(i);
+    s += "\n";
+  }
+  return s;
+}
+
+// The soup a binary STL of the triangle soup `soup` gives: float coordinates, equal points
+// merged, in order of first appearance.
+mbp_test::Soup as_read_from_stl(const mbp_test::Soup& soup)
+{
+  mbp_test::Soup read;
+  std::map<std::array<double, 3>, std::size_t> index;
+  for(const auto& f : soup.faces)
+  {
+    std::vector<std::size_t> face;
+    for(std::size_t i : f)
+    {
+      const std::array<double, 3> p = {double(float(soup.points[i][0])), double(float(soup.points[i][1])),
+                                       double(float(soup.points[i][2]))};
+      const auto inserted = index.insert({p, read.points.size()});
+      if(inserted.second)
+        read.points.push_back(p);
+      face.push_back(inserted.first->second);
+    }
+    read.faces.push_back(face);
+  }
+  return read;
+}
+
+// The text of every <text> element of an SVG document and its position, against the
+// document's size: (x, y) of each, and width, height.
+struct Svg_texts
+{
+  long width = 0, height = 0;
+  std::vector<std::array<long, 2> > positions;
+};
+
+Svg_texts svg_texts(const std::string& svg)
+{
+  Svg_texts t;
+  const std::size_t box = svg.find("viewBox=\"0 0 ");
+  BOOST_REQUIRE(box != std::string::npos);
+  std::istringstream size(svg.substr(box + 13, 40));
+  size >> t.width >> t.height;
+  for(std::size_t at = svg.find("<text x=\""); at != std::string::npos; at = svg.find("<text x=\"", at + 1))
+  {
+    std::istringstream x(svg.substr(at + 9, 20));
+    long px = 0, py = 0;
+    x >> px;
+    const std::size_t y = svg.find("y=\"", at);
+    std::istringstream yy(svg.substr(y + 3, 20));
+    yy >> py;
+    t.positions.push_back({px, py});
+  }
+  return t;
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(atlas_of_soups_with_defects)
+{
+  // generated soups with a defect each, in every format the program reads, get an atlas by
+  // default: exit 0, the input's points and polygons with a UV on every corner, groups per
+  // chart, no overlap between charts, and the repair reported
+  struct Case
+  {
+    std::string name, file;
+    mbp_test::Soup soup;
+    std::string repair;     // a count of the JSON's repair that must be positive
+    std::size_t charts;     // at least this many charts
+  };
+  mbp_test::Soup two_components = mbp_test::grid(3);
+  mbp_test::append(two_components, mbp_test::square(5.));
+  mbp_test::Soup far_apart = mbp_test::grid(2);  // for STL: two components of triangles
+  mbp_test::append(far_apart, mbp_test::with_reversed_faces(mbp_test::grid(2), 0, 1));
+  for(std::size_t i = far_apart.points.size() / 2; i < far_apart.points.size(); ++i)
+    far_apart.points[i][2] = 3.;
+  const std::vector<Case> cases = {
+    {"two components (OBJ)", "two.obj", two_components, "components", 2},
+    {"quads and a pentagon (PLY)", "polygons.ply", mbp_test::quads_and_a_pentagon_soup(), "triangulated_polygons", 1},
+    {"flipped faces (OFF)", "flipped.off", mbp_test::with_reversed_faces(mbp_test::grid(4), 1, 3), "reoriented_polygons", 1},
+    {"zero-area face (OFF)", "sliver.off", mbp_test::zero_area_face_on_an_edge_soup(), "zero_area_triangles", 1},
+    {"edge with three faces (OFF)", "fin.off", mbp_test::edge_with_three_faces_soup(), "non_manifold_edges", 1},
+    {"two cones at a vertex (OFF)", "cones.off", mbp_test::two_cones(), "pinched_vertices", 1},
+    {"Moebius strip (OFF)", "moebius.off", mbp_test::moebius_strip_soup(24), "non_orientable_components", 1},
+    {"polygons through a point twice (OBJ)", "twice.obj", mbp_test::polygons_through_a_point_twice_soup(),
+     "degenerate_polygons", 1},
+    {"two components (STL)", "two.stl", far_apart, "components", 2},
+  };
+  for(const Case& c : cases)
+    BOOST_TEST_CONTEXT(c.name)
+    {
+      Scratch scratch;
+      const std::string ext = fs::path(c.file).extension().string();
+      scratch.write(c.file, ext == ".obj" ? obj_text(c.soup) : ext == ".ply" ? ascii_ply_text(c.soup)
+                            : ext == ".stl" ? binary_stl(c.soup) : exact_off_text(c.soup));
+      const Run r = scratch.run({c.file, "out.obj", "--svg=out.svg", "--json"});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      BOOST_TEST((scratch.files() == std::set<std::string>{c.file, "out.obj", "out.svg"}));
+      const boost::property_tree::ptree j = parse_json(r.out);
+      const mbp_test::Soup input = (ext == ".stl") ? as_read_from_stl(c.soup) : c.soup;
+      const std::size_t charts = check_atlas(read_atlas_obj(scratch.work / "out.obj"), j, input);
+      BOOST_TEST(charts >= c.charts);
+      BOOST_TEST(j.get<std::size_t>("repair." + c.repair) > 0u, c.repair);
+      BOOST_TEST(j.get<std::size_t>("repair.input_corners") == j.get<std::size_t>("corners"));
+      if(c.repair == "components")
+        BOOST_TEST(j.get<std::size_t>("repair.components") == 2u);
+
+      // the SVG: a complete document of the packed square, the charts outlined, every text
+      // inside the picture
+      const std::string svg = Scratch::read_text(scratch.work / "out.svg");
+      BOOST_TEST(svg.rfind("<?xml", 0) == 0u);
+      BOOST_TEST(svg.substr(svg.size() - 7) == "</svg>\n");
+      BOOST_TEST(contains(svg, c.file));
+      BOOST_TEST(contains(svg, "chart outlines (" + std::to_string(charts) + ")"));
+      BOOST_TEST(contains(svg, "area distortion per polygon"));
+      BOOST_TEST(contains(svg, "utilization"));
+      BOOST_TEST(!contains(svg, "nan"));
+      const Svg_texts texts = svg_texts(svg);
+      BOOST_TEST(texts.positions.size() >= 6u);
+      for(const auto& p : texts.positions)
+        BOOST_TEST((p[0] >= 0 && p[0] < texts.width && p[1] > 0 && p[1] < texts.height),
+                   "text at " << p[0] << " " << p[1] << " in " << texts.width << " x " << texts.height);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(default_run_is_an_atlas)
+{
+  // no option: the atlas; the grid is a disk: one chart
+  Mesh grid;
+  {
+    std::istringstream in(grid_off);
+    BOOST_REQUIRE(CGAL::IO::read_OFF(in, grid));
+  }
+  Scratch scratch;
+  scratch.write("grid.off", grid_off);
+  const Run r = scratch.run({"grid.off", "--json"});
+  BOOST_REQUIRE_EQUAL(r.code, 0);
+  BOOST_TEST((scratch.files() == std::set<std::string>{"grid.off", "grid_uv.obj"}));
+  const boost::property_tree::ptree j = parse_json(r.out);
+  mbp_test::Soup soup;
+  for(vertex_descriptor v : vertices(grid))
+    soup.points.push_back({grid.point(v).x(), grid.point(v).y(), grid.point(v).z()});
+  for(auto f : faces(grid))
+  {
+    soup.faces.emplace_back();
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, grid), grid))
+      soup.faces.back().push_back(std::size_t(v));
+  }
+  const Atlas_obj atlas = read_atlas_obj(scratch.work / "grid_uv.obj");
+  BOOST_TEST(check_atlas(atlas, j, soup) == 1u);
+  BOOST_TEST(atlas.groups == 1u);
+  BOOST_TEST(j.get_child("charts").begin()->second.get<std::string>("flattening") == "disk");
+  BOOST_TEST(j.get<std::string>("repair.merged_points") == "0");
+  // the summary: charts, utilization, repairs, time
+  const Run s = scratch.run({"grid.off", "summary.obj"});
+  BOOST_REQUIRE_EQUAL(s.code, 0);
+  BOOST_TEST(std::count(s.out.begin(), s.out.end(), '\n') == 1);
+  for(const char* part : {"grid.off: 9 points, 8 polygons", "| 1 chart, utilization ", "(1024 texels, gutter 2)",
+                          "| repairs: none", "| seconds: repair ", "total ", "| wrote summary.obj"})
+    BOOST_TEST(contains(s.out, part), part << " not in " << s.out);
+
+  // --single-chart, or an option of that mode, keeps the single chart of before: one UV per
+  // vertex, the same OBJ with --single-chart as with --border=auto
+  for(const std::string option : {"--single-chart", "--border=auto", "--border=measured"})
+    BOOST_TEST_CONTEXT(option)
+    {
+      const Run o = scratch.run({"grid.off", option.substr(2) + ".obj", option, "--json"});
+      BOOST_REQUIRE_EQUAL(o.code, 0);
+      BOOST_TEST(parse_json(o.out).get<std::string>("mode") == "single-chart");
+      check_obj_against_mesh(read_obj(scratch.work / (option.substr(2) + ".obj")), grid);
+    }
+  BOOST_TEST(Scratch::read_text(scratch.work / "single-chart.obj") == Scratch::read_text(scratch.work / "border=auto.obj"));
+
+  // no INPUT: the default mesh, a disk, is one chart
+  {
+    Scratch d;
+    Mesh mesh;
+    mbp_test::read_mesh(default_mesh_path(), mesh);
+    const Run m = d.run({"--json"});
+    BOOST_REQUIRE_EQUAL(m.code, 0);
+    const boost::property_tree::ptree mj = parse_json(m.out);
+    BOOST_TEST(mj.get<std::string>("mode") == "atlas");
+    BOOST_TEST(mj.get<std::size_t>("chart_count") == 1u);
+    BOOST_TEST(mj.get<std::size_t>("polygons") == num_faces(mesh));
+    const std::string obj_name = fs::path(default_mesh_path()).stem().string() + "_uv.obj";
+    BOOST_TEST((d.files() == std::set<std::string>{obj_name}));
+    BOOST_TEST(read_atlas_obj(d.work / obj_name).vt.size() == 3 * num_faces(mesh));
+  }
+  // the generated curved disk too
+  Scratch generated;
+  const Run g = generated.run({"--json"}, MBP_CLI_NO_DEFAULT_MESH_PROGRAM);
+  BOOST_REQUIRE_EQUAL(g.code, 0);
+  const boost::property_tree::ptree gj = parse_json(g.out);
+  BOOST_TEST(gj.get<bool>("generated_mesh"));
+  BOOST_TEST(gj.get<std::size_t>("chart_count") == 1u);
+  const Atlas_obj disk = read_atlas_obj(generated.work / "curved_disk_uv.obj");
+  BOOST_TEST(disk.f.size() == gj.get<std::size_t>("polygons"));
+  BOOST_TEST(overlapping_chart_pairs(disk) == 0u);
+}
+
+BOOST_AUTO_TEST_CASE(atlas_options_and_failures)
+{
+  mbp_test::Soup two = mbp_test::grid(3);
+  mbp_test::append(two, mbp_test::square(5.));
+  // --resolution and --gutter: in the JSON, the OBJ header and the summary
+  {
+    Scratch scratch;
+    scratch.write("two.off", exact_off_text(two));
+    const Run r = scratch.run({"two.off", "out.obj", "--json", "--resolution=256", "--gutter=4", "--atlas"});
+    BOOST_REQUIRE_EQUAL(r.code, 0);
+    const boost::property_tree::ptree j = parse_json(r.out);
+    BOOST_TEST(j.get<int>("resolution") == 256);
+    BOOST_TEST(j.get<int>("gutter") == 4);
+    const Atlas_obj obj = read_atlas_obj(scratch.work / "out.obj");
+    check_atlas(obj, j, two);
+    BOOST_TEST(contains(Scratch::read_text(scratch.work / "out.obj"), "(256 texels, gutter 4)"));
+    // the gutter kept to the border of the square: 4 texels of 1/256
+    std::size_t in_gutter = 0;
+    for(const auto& q : obj.vt)
+      for(double x : q)
+        in_gutter += (x >= 4. / 256. - 1e-9 && x <= 1. - 4. / 256. + 1e-9) ? 0 : 1;
+    BOOST_TEST(in_gutter == 0u, in_gutter << " UV coordinates within 4 texels of the border");
+  }
+  // coordinates so large (or small) that squared lengths overflow (or underflow): an atlas all
+  // the same, the OBJ with the input's coordinates, the texel density in the input's unit
+  {
+    Scratch scratch;
+    scratch.write("unit.off", exact_off_text(two));
+    const Run u = scratch.run({"unit.off", "unit.obj", "--json"});
+    BOOST_REQUIRE_EQUAL(u.code, 0);
+    const double density = parse_json(u.out).get<double>("texel_density");
+    for(const double scale : {1e300, 1e-300})
+      BOOST_TEST_CONTEXT("scale " << scale)
+      {
+        mbp_test::Soup scaled = two;
+        for(auto& p : scaled.points)
+          for(double& x : p)
+            x *= scale;
+        scratch.write("scaled.off", exact_off_text(scaled));
+        const Run r = scratch.run({"scaled.off", "scaled.obj", "--json"});
+        BOOST_REQUIRE_EQUAL(r.code, 0);
+        const boost::property_tree::ptree j = parse_json(r.out);
+        check_atlas(read_atlas_obj(scratch.work / "scaled.obj"), j, scaled);
+        BOOST_TEST(std::abs(j.get<double>("texel_density") * scale / density - 1.) < 0.02);  // the packing's search
+      }
+  }
+  // command-line errors: exit 2, the message, no file
+  const std::vector<std::pair<std::vector<std::string>, std::string> > usage = {
+    {{"two.off", "--atlas", "--border=measured"}, "option --atlas cannot be combined with --border"},
+    {{"two.off", "--atlas", "--single-chart"}, "option --atlas cannot be combined with --single-chart"},
+    {{"two.off", "--single-chart", "--resolution=512"}, "option --resolution (of the atlas) cannot be combined with --single-chart"},
+    {{"two.off", "--gutter=1", "--seams=s.txt"}, "option --gutter (of the atlas) cannot be combined with --seams"},
+    {{"two.off", "--resolution=7"}, "value 7 of --resolution is out of range (expected a whole number from 8 to 65536)"},
+    {{"two.off", "--resolution=1k"}, "bad value '1k' of --resolution"},
+    {{"two.off", "--gutter=-1"}, "bad value '-1' of --gutter"},
+    {{"two.off", "--resolution=64", "--gutter=17"}, "--gutter=17 is too wide for --resolution=64 (at most 16 texels"},
+    {{"two.off", "--resolution"}, "option --resolution needs a value"},
+    {{"two.off", "--atlas=yes"}, "option --atlas takes no value"},
+    {{"two.off", "--single-chart", "--single-chart"}, "option --single-chart is given twice"},
+  };
+  for(const auto& u : usage)
+    BOOST_TEST_CONTEXT(u.first.back())
+    {
+      Scratch scratch;
+      scratch.write("two.off", exact_off_text(two));
+      const Run r = scratch.run(u.first);
+      BOOST_TEST(r.code == 2);
+      BOOST_TEST(contains(r.err, "error: " + u.second), r.err);
+      BOOST_TEST((scratch.files() == std::set<std::string>{"two.off"}));
+    }
+  // inputs that cannot be textured: exit 1, a message naming the problem, no file; with
+  // --json the same error on stdout
+  std::string nan_grid = grid_off;
+  nan_grid.replace(nan_grid.find("1 1 0.3"), 7, "nan 1 0.3");
+  mbp_test::Soup flat;  // polygons of no area: a segment, a repeated point
+  flat.points = {{{0., 0., 0.}}, {{1., 0., 0.}}, {{2., 0., 0.}}};
+  flat.faces = {{0, 1, 2}, {1, 1, 1}, {0, 2}};
+  mbp_test::Soup many;  // 100 separate triangles: more charts than 8 x 8 texels hold with a gutter of 2
+  for(std::size_t t = 0; t < 100; ++t)
+  {
+    many.points.push_back({{3. * double(t), 0., 0.}});
+    many.points.push_back({{3. * double(t) + 1., 0., 0.}});
+    many.points.push_back({{3. * double(t), 1., 0.}});
+    many.faces.push_back({3 * t, 3 * t + 1, 3 * t + 2});
+  }
+  struct Failure_case
+  {
+    std::string name, file, contents;
+    std::vector<std::string> args, messages;
+    int error_code;  // the library's Error_code in the JSON, 0: null
+  };
+  const std::vector<Failure_case> failures = {
+    {"empty file", "empty.off", "", {}, {"empty.off: the file is empty"}, 0},
+    {"no polygon", "points.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", {}, {"points.off: ", "it has no faces (3 vertices)"},
+     int(SMP::ERROR_EMPTY_MESH)},
+    {"NaN coordinate (text)", "nan.off", nan_grid, {}, {"non-finite", "'nan'", "line 7"}, int(SMP::ERROR_NON_FINITE_COORDINATES)},
+    {"NaN coordinate (binary)", "nan.ply", binary_ply_with_nan(), {}, {"non-finite", "vertex 4"},
+     int(SMP::ERROR_NON_FINITE_COORDINATES)},
+    {"polygons of no area", "flat.obj", obj_text(flat), {},
+     {"no polygon has three distinct points and a nonzero area (3 polygons)"}, int(SMP::ERROR_EMPTY_MESH)},
+    {"charts that do not fit", "many.off", exact_off_text(many), {"--resolution=8", "--gutter=2"},
+     {"the charts do not fit into a texture of 8 x 8 texels with a gutter of 2 texels"}, int(SMP::ERROR_WRONG_PARAMETER)},
+  };
+  for(const Failure_case& c : failures)
+    BOOST_TEST_CONTEXT(c.name)
+    {
+      Scratch scratch;
+      scratch.write(c.file, c.contents);
+      std::vector<std::string> args{c.file, "out.obj", "--svg=out.svg"};
+      args.insert(args.end(), c.args.begin(), c.args.end());
+      const Run r = scratch.run(args);
+      BOOST_TEST(r.code == 1);
+      for(const std::string& m : c.messages)
+        BOOST_TEST(contains(r.err, m), "'" << m << "' not in: " << r.err);
+      BOOST_TEST(r.out.empty());
+      BOOST_TEST((scratch.files() == std::set<std::string>{c.file}));
+      args.push_back("--json");
+      const Run jr = scratch.run(args);
+      BOOST_TEST(jr.code == 1);
+      const boost::property_tree::ptree j = parse_json(jr.out);
+      BOOST_TEST(j.get<std::string>("error") == error_message(jr.err));
+      BOOST_TEST(j.get<std::string>("error_code") == (c.error_code == 0 ? std::string("null") : std::to_string(c.error_code)));
+      BOOST_TEST((scratch.files() == std::set<std::string>{c.file}));
+    }
+}
+
+MBP_TIERED_TEST_CASE(messy_real_meshes_get_an_atlas)
+{
+  // the meshes --single-chart refuses (messy_real_meshes_fail_cleanly) get an atlas: several
+  // components, a non-manifold vertex. Core tier: CGAL's data meshes; extended tier: the
+  // project's ogre (45 components) and five of the meshes of issue 22 (../atlas beside the
+  // project's meshes: components, non-manifold edges, a binary STL with a face using a vertex
+  // twice, polygons, a Moebius strip).
+  const std::vector<std::string> names = (tier == mbp_test::Tier::core)
+    ? std::vector<std::string>{"mask_cone.off", "polygon_mesh.off"}
+    : std::vector<std::string>{"ogre.obj", "../atlas/Gravgen.obj", "../atlas/cycloidal.ply",
+                               "../atlas/Spider_binary.stl", "../atlas/lion_vase_poly.off", "../atlas/moebius.obj"};
+  for(const std::string& name : names)
+    BOOST_TEST_CONTEXT("mesh: " << name)
+    {
+      const std::string path = name.rfind("../", 0) == 0 ? mbp_test::shared_mesh_dir() + "/" + name
+                                                         : mbp_test::tier_mesh(tier, name);
+      std::vector<K::Point_3> points;
+      mbp_test::Soup soup;
+      BOOST_REQUIRE(CGAL::IO::read_polygon_soup(path, points, soup.faces));
+      for(const K::Point_3& p : points)
+        soup.points.push_back({p.x(), p.y(), p.z()});
+      Scratch scratch;
+      const Run r = scratch.run({path, "out.obj", "--svg=out.svg", "--json"});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      const boost::property_tree::ptree j = parse_json(r.out);
+      const std::size_t charts = check_atlas(read_atlas_obj(scratch.work / "out.obj"), j, soup);
+      BOOST_TEST_MESSAGE(name << ": " << charts << " charts, utilization " << j.get<double>("utilization"));
+      BOOST_TEST(contains(Scratch::read_text(scratch.work / "out.svg"), "chart outlines (" + std::to_string(charts) + ")"));
     }
 }
 
