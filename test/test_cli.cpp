@@ -2169,26 +2169,70 @@ bool uv_triangles_overlap(const Uv_triangle& a, const Uv_triangle& b, double eps
   return true;
 }
 
-// The pairs of UV triangles of different charts whose interiors overlap (each polygon a fan
-// from its first corner; triangles of no area left out, and polygons through a point twice,
-// whose pieces may lie in different charts): every pair whose boxes share a cell of a 64 x 64
-// grid of the unit square is tested.
+double twice_signed_area(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c)
+{
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+// The triangles of a UV polygon by ear clipping (a fan would fold over a concave corner);
+// the rest as a fan when no ear is left (a polygon that is not simple).
+std::vector<Uv_triangle> uv_triangles(std::vector<std::array<double, 2> > p)
+{
+  double area = 0.;
+  for(std::size_t k = 1; k + 1 < p.size(); ++k)
+    area += twice_signed_area(p[0], p[k], p[k + 1]);
+  const double side = area < 0. ? -1. : 1.;
+  std::vector<Uv_triangle> triangles;
+  while(p.size() > 3)
+  {
+    std::size_t ear = p.size();
+    for(std::size_t k = 0; k < p.size() && ear == p.size(); ++k)
+    {
+      const std::array<double, 2>& a = p[(k + p.size() - 1) % p.size()];
+      const std::array<double, 2>& b = p[k];
+      const std::array<double, 2>& c = p[(k + 1) % p.size()];
+      if(!(side * twice_signed_area(a, b, c) > 0.))
+        continue;
+      bool empty = true;
+      for(const std::array<double, 2>& q : p)
+        if(q != a && q != b && q != c && side * twice_signed_area(a, b, q) >= 0. &&
+           side * twice_signed_area(b, c, q) >= 0. && side * twice_signed_area(c, a, q) >= 0.)
+          empty = false;
+      if(empty)
+        ear = k;
+    }
+    if(ear == p.size())
+      break;
+    triangles.push_back({p[(ear + p.size() - 1) % p.size()], p[ear], p[(ear + 1) % p.size()]});
+    p.erase(p.begin() + std::ptrdiff_t(ear));
+  }
+  for(std::size_t k = 1; k + 1 < p.size(); ++k)
+    triangles.push_back({p[0], p[k], p[k + 1]});
+  return triangles;
+}
+
+// The pairs of UV triangles of different charts whose interiors overlap (each polygon cut
+// into triangles by ear clipping; triangles of no area left out, and polygons through a point
+// twice, whose pieces may lie in different charts): every pair whose boxes share a cell of a
+// 64 x 64 grid of the unit square is tested.
 std::size_t overlapping_chart_pairs(const Atlas_obj& obj)
 {
   std::vector<Uv_triangle> triangles;
   std::vector<long> chart;
   for(std::size_t i = 0; i < obj.ft.size(); ++i)
-    for(std::size_t k = 1; k + 1 < obj.ft[i].size() &&
-                           std::set<std::size_t>(obj.f[i].begin(), obj.f[i].end()).size() == obj.f[i].size(); ++k)
-    {
-      const Uv_triangle t = {obj.vt[obj.ft[i][0]], obj.vt[obj.ft[i][k]], obj.vt[obj.ft[i][k + 1]]};
-      const double area = (t[1][0] - t[0][0]) * (t[2][1] - t[0][1]) - (t[1][1] - t[0][1]) * (t[2][0] - t[0][0]);
-      if(area != 0.)
+  {
+    if(obj.ft[i].size() < 3 || std::set<std::size_t>(obj.f[i].begin(), obj.f[i].end()).size() != obj.f[i].size())
+      continue;
+    std::vector<std::array<double, 2> > polygon;
+    for(std::size_t uv : obj.ft[i])
+      polygon.push_back(obj.vt[uv]);
+    for(const Uv_triangle& t : uv_triangles(polygon))
+      if(twice_signed_area(t[0], t[1], t[2]) != 0.)
       {
         triangles.push_back(t);
         chart.push_back(obj.chart[i]);
       }
-    }
+  }
   const int n = 64;
   std::vector<std::vector<std::size_t> > cells(std::size_t(n * n));
   auto cell = [n](double x) { return std::clamp(int(std::floor(x * n)), 0, n - 1); };
