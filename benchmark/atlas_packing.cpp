@@ -258,7 +258,8 @@ Raster_figures run_raster(const Options& options, const std::vector<SMP::interna
     const double gutter = double(options.packing.gutter) / double(options.packing.resolution);
     const mbp_atlas_check::Atlas_check c = mbp_atlas_check::check_atlas(figures.packing.uv, faces, gutter);
     std::ostringstream s;
-    s << c.overlapping_pairs << "/" << c.close_pairs << "/" << c.outside << " (min " << std::setprecision(3)
+    s << c.overlapping_pairs << "/" << c.close_pairs << "/" << c.outside << "/" << c.near_border << " (min "
+      << std::setprecision(3)
       << c.min_distance * options.packing.resolution << " texels)";
     figures.check = s.str();
   }
@@ -434,7 +435,7 @@ void print_header(const Options& options)
             << " texels; libnest2d placer " << options.placer << "\n\n"
             << "| mesh | faces | charts | xatlas util (printed / exact / square) | xatlas s | raster util | "
                "raster s (raster + placement) | attempts | libnest2d util | libnest2d s |"
-            << (options.check ? " check (overlaps/close/outside) |" : "") << "\n"
+            << (options.check ? " check (overlaps/close/outside/near border) |" : "") << "\n"
             << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|" << (options.check ? "---|" : "") << "\n";
 }
 

@@ -646,7 +646,7 @@ inline double search_density(const Packing_problem& problem, const Atlas_packing
     after_fit += best.density > 0. ? 1 : 0;
     const bool done = no_fit <= best.result() * tolerance || (fits && fill * tolerance * tolerance >= 1.)
                       || (fits && d >= largest) || after_fit > options.max_attempts;
-    if((best.density > 0. && done) || (best.density == 0. && d <= smallest))
+    if((best.density > 0. && done) || (best.density == 0. && (d <= smallest || stats.attempts >= 64)))
       break;
     d = std::min(largest, std::max(smallest, next_density(d, fill, best.result(), no_fit, options.density_tolerance)));
   }
