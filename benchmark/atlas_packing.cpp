@@ -31,9 +31,10 @@
 //              same normalization (one texel density, smallest box), the convex hull of each
 //              chart as its item, libnest2d's BottomLeftPlacer (--placer=bl, 90-degree turns)
 //              or NfpPlacer (--placer=nfp, 0/90/180/270 degrees, single-threaded) with
-//              FirstFitSelection, min_obj_distance = gutter; the same search of the global
-//              scale (the largest at which every chart goes into one bin). It stops after
-//              --nest-seconds (default 120) with the best scale found so far.
+//              FirstFitSelection, min_obj_distance = gutter, a bin of the atlas less a gutter;
+//              the largest density at which every chart goes into one bin, searched from the
+//              package's density (down by 0.9, then bisection to the same tolerance). It stops
+//              after --nest-seconds (default 120) with the best density found so far.
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/packing.h>
 
@@ -317,8 +318,10 @@ bool nest_at_scale(const std::vector<std::vector<Eigen::Vector2d> >& hulls, doub
   std::vector<libnest2d::Item> items;
   for(const auto& hull : hulls)
     items.push_back(nest_item(hull, texels_per_unit));
+  // items are kept min_obj_distance / 2 from the bin's border: a bin of the atlas less one
+  // gutter keeps the atlas's gutter to its border
   const libnest2d::Coord side =
-      libnest2d::Coord((options.packing.resolution + options.packing.gutter) * nest_units);
+      libnest2d::Coord((options.packing.resolution - options.packing.gutter) * nest_units);
   const libnest2d::Box bin(side, side, {side / 2, side / 2});
   const libnest2d::Coord distance = libnest2d::Coord(options.packing.gutter * nest_units);
   std::size_t bins = 0;
@@ -341,8 +344,10 @@ bool nest_at_scale(const std::vector<std::vector<Eigen::Vector2d> >& hulls, doub
   return bins == 1;
 }
 
-// The search of packing.h's search_scale(), with libnest2d as the feasibility test.
-Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::Chart_to_pack>& charts)
+// The largest density at which libnest2d puts every chart into one bin: from `seed` (the
+// package's density, texels per unit), down by 0.9 until one fits, then bisection to the
+// package's tolerance; stopped after --nest-seconds with the best density found.
+Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::Chart_to_pack>& charts, double seed)
 {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&start] {
@@ -357,9 +362,8 @@ Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::C
   }
   const std::vector<std::vector<Eigen::Vector2d> > hulls = normalized_hulls(charts, packed);
   Nest_figures figures;
-  const double bound = options.packing.resolution / std::sqrt(area);
-  double low = 0., high = bound;
-  for(double scale = bound; low == 0. && scale > 0.05 * bound && !figures.stopped; scale *= 0.9)
+  double low = 0., high = HUGE_VAL;
+  for(double scale = seed; low == 0. && scale > 0.05 * seed && !figures.stopped; scale *= 0.9)
   {
     ++figures.attempts;
     (nest_at_scale(hulls, scale, options) ? low : high) = scale;
@@ -367,7 +371,7 @@ Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::C
   }
   while(low > 0. && high > low * (1. + options.packing.density_tolerance) && !figures.stopped)
   {
-    const double scale = std::sqrt(low * high);
+    const double scale = high == HUGE_VAL ? low * 1.05 : std::sqrt(low * high);
     ++figures.attempts;
     (nest_at_scale(hulls, scale, options) ? low : high) = scale;
     figures.stopped = elapsed() > options.nest_seconds;
@@ -460,7 +464,8 @@ void measure_mesh(const Options& options, const fs::path& mesh, const fs::path& 
 #ifdef MBP_HAS_LIBNEST2D
   if(options.nest)
   {
-    const Nest_figures n = run_nest(options, x.charts);
+    const double seed = std::sqrt(r.packing.statistics.texel_density) * options.packing.resolution;
+    const Nest_figures n = run_nest(options, x.charts, seed > 0. ? seed : 1.);
     std::cout << std::setprecision(4) << n.utilization << (n.stopped ? " (stopped)" : "") << " | "
               << std::setprecision(2) << n.seconds << " |";
   }

@@ -279,6 +279,7 @@ struct Packing_workspace
   std::vector<int> run_begin, run_end;
   std::vector<double> points;
   std::vector<Chart_placement> placements;
+  std::vector<std::array<int, 2> > reach;  // per chart and quarter: the rows above it do not fit its mask
   std::vector<int> lifetimes, summary_lifetimes;
   Atlas_occupancy occupancy;
   double placed_area = 0.;  // the frames' areas of the charts placed by the last attempt
@@ -365,8 +366,41 @@ inline void compute_mask(Chart_frame& frame, int quarter, const Raster_view& mas
   frame.band_count[q] = int(ws.bands.size() - frame.bands[q]);
 }
 
-// Rasterizes one chart's triangles and loose points (cells T), then its dilated, turned rasters
-// and their runs and bands.
+// Marks the cells of a chart's triangles and loose points, given by their frame points.
+inline void rasterize_points(const Raster_view& cells, const Chart_to_pack& input, const Packing_chart& chart,
+                             const double* points)
+{
+  for(const Face_indices& t : input.triangles)
+    rasterize_triangle(cells, points + 2 * t[0], points + 2 * t[1], points + 2 * t[2]);
+  for(int v : chart.loose_points)  // a triangle's raster covers its corners
+    rasterize_triangle(cells, points + 2 * v, points + 2 * v, points + 2 * v);
+}
+
+// The cells T of a chart turned by a quarter: its turned points rasterized (as cheap as the
+// first raster) when it has few triangles for its cells, else the first raster turned (one
+// step per cell).
+inline void rasterize_turned(const Chart_to_pack& input, const Packing_chart& chart, const Chart_frame& frame,
+                             const Raster_setup& setup, Packing_workspace& ws)
+{
+  const Raster_view cells = frame_raster(ws, frame, 0, false, setup.gutter);
+  const Raster_view turned = frame_raster(ws, frame, 1, false, setup.gutter);
+  if(32. * double(input.triangles.size()) > double(frame.cells[0]) * double(frame.cells[1]))
+  {
+    rotate_quarter(cells, turned);
+    return;
+  }
+  const double height = double(cells.height);  // (x, y) -> (height - y, x)
+  for(std::size_t v = 0; v < input.uv.size(); ++v)
+  {
+    const double x = ws.points[2 * v];
+    ws.points[2 * v] = height - ws.points[2 * v + 1];
+    ws.points[2 * v + 1] = x;
+  }
+  rasterize_points(turned, input, chart, ws.points.data());
+}
+
+// Rasterizes one chart's triangles and loose points (cells T), turned too, then its dilated
+// rasters and their runs and bands.
 inline void rasterize_chart(const Chart_to_pack& input, const Packing_chart& chart, Chart_frame& frame,
                             const Raster_setup& setup, Packing_workspace& ws)
 {
@@ -377,19 +411,13 @@ inline void rasterize_chart(const Chart_to_pack& input, const Packing_chart& cha
     ws.points[2 * v] = p.x();
     ws.points[2 * v + 1] = p.y();
   }
-  const Raster_view cells = frame_raster(ws, frame, 0, false, setup.gutter);
-  const double* points = ws.points.data();
-  for(const Face_indices& t : input.triangles)
-    rasterize_triangle(cells, points + 2 * t[0], points + 2 * t[1], points + 2 * t[2]);
-  for(int v : chart.loose_points)  // a triangle's raster covers its corners
-    rasterize_triangle(cells, points + 2 * v, points + 2 * v, points + 2 * v);
-  const Raster_view turned = frame_raster(ws, frame, 1, false, setup.gutter);
+  rasterize_points(frame_raster(ws, frame, 0, false, setup.gutter), input, chart, ws.points.data());
   if(setup.quarter_turns)
-    rotate_quarter(cells, turned);
+    rasterize_turned(input, chart, frame, setup, ws);
   for(int quarter = 0; quarter < (setup.quarter_turns ? 2 : 1); ++quarter)
   {
     const Raster_view mask = frame_raster(ws, frame, quarter, true, setup.gutter);
-    dilate(quarter == 0 ? cells : turned, mask, setup.gutter);
+    dilate(frame_raster(ws, frame, quarter, false, setup.gutter), mask, setup.gutter);
     compute_mask(frame, quarter, mask, ws);
   }
 }
@@ -397,17 +425,49 @@ inline void rasterize_chart(const Chart_to_pack& input, const Packing_chart& cha
 // ---------------------------------------------------------------------------------------
 // 3 (continued): the placement of the rasters
 
-// The first position of a chart turned by `quarter` whose frame's bottom row is above
-// `bottom` (or at `bottom` and left of `left`); x = -1 when there is none.
-inline Frame_position find_position(Packing_workspace& ws, const Chart_frame& frame, int quarter, int bottom,
-                                    int left, const Raster_setup& setup)
+// Whether the dilated raster of the chart `a` turned by `qa` is a subset of that of `b`
+// turned by `qb` (of the same size).
+inline bool mask_contained(const Packing_workspace& ws, std::size_t a, int qa, std::size_t b, int qb, int gutter)
 {
-  const std::size_t q = std::size_t(quarter);
+  const std::array<int, 2> size = frame_size(ws.frames[a], qa, gutter);
+  if(size != frame_size(ws.frames[b], qb, gutter))
+    return false;
+  const std::uint64_t* p = ws.pool.data() + ws.frames[a].mask_words[std::size_t(qa)];
+  const std::uint64_t* q = ws.pool.data() + ws.frames[b].mask_words[std::size_t(qb)];
+  const std::size_t words = std::size_t(size[1]) * std::size_t(words_for_bits(size[0]));
+  for(std::size_t k = 0; k < words; ++k)
+    if((p[k] & ~q[k]) != 0)
+      return false;
+  return true;
+}
+
+// The first row where the chart `c` turned by `quarter` may fit: the reach of the searches
+// of the last charts placed (at most 32, `done` of them) whose mask its mask contains.
+inline int known_unfit_rows(const Packing_workspace& ws, const std::vector<std::size_t>& order, std::size_t done,
+                            std::size_t c, int quarter, const Raster_setup& setup)
+{
+  int y = 0;
+  for(std::size_t i = done; i-- > 0 && done - i <= 32;)
+    for(int q = 0; q < (setup.quarter_turns ? 2 : 1); ++q)
+      if(ws.reach[order[i]][std::size_t(q)] > y && mask_contained(ws, order[i], q, c, quarter, setup.gutter))
+        y = ws.reach[order[i]][std::size_t(q)];
+  return y;
+}
+
+// The first position of the chart `c` (the done-th of `order`) turned by `quarter` whose
+// frame's bottom row is above `bottom` (or at `bottom` and left of `left`); x = -1 when there
+// is none.
+inline Frame_position find_position(Packing_workspace& ws, const std::vector<std::size_t>& order, std::size_t done,
+                                    int quarter, int bottom, int left, const Raster_setup& setup)
+{
+  const std::size_t c = order[done], q = std::size_t(quarter);
+  const Chart_frame& frame = ws.frames[c];
   const std::array<int, 2> size = frame_size(frame, quarter, setup.gutter);
   const Chart_mask mask{ws.runs.data() + frame.runs[q], frame.run_count[q], ws.bands.data() + frame.bands[q],
                         frame.band_count[q]};
   const int y_max = std::min(setup.resolution, bottom) - size[1];
-  const Frame_position found = ws.occupancy.find(mask, setup.resolution - size[0], y_max);
+  const int start = known_unfit_rows(ws, order, done, c, quarter, setup);
+  const Frame_position found = ws.occupancy.find(mask, setup.resolution - size[0], y_max, start, ws.reach[c][q]);
   if(found.x >= 0 && found.y + size[1] == bottom && found.x >= left)
     return Frame_position();
   return found;
@@ -444,15 +504,17 @@ inline bool place_charts(const std::vector<std::size_t>& order, const Raster_set
 {
   start_occupancy(order, setup, ws);
   ws.placements.assign(ws.frames.size(), Chart_placement());
+  ws.reach.assign(ws.frames.size(), std::array<int, 2>{{0, 0}});
   ws.placed_area = 0.;
-  for(std::size_t c : order)
+  for(std::size_t done = 0; done < order.size(); ++done)
   {
+    const std::size_t c = order[done];
     const Chart_frame& frame = ws.frames[c];
     Chart_placement best;
     int bottom = setup.resolution + 1, left = 0;
     for(int quarter = 0; quarter < (setup.quarter_turns ? 2 : 1); ++quarter)
     {
-      const Frame_position p = find_position(ws, frame, quarter, bottom, left, setup);
+      const Frame_position p = find_position(ws, order, done, quarter, bottom, left, setup);
       if(p.x < 0)
         continue;
       best = Chart_placement{p.x, p.y, quarter};

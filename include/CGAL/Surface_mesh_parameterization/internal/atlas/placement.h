@@ -263,6 +263,14 @@ public:
     group_level_ = 0;
     while((64 << group_level_) < size)
       ++group_level_;
+    group_spread_.clear();
+    for(std::uint64_t bits = 0; group_level_ >= 3 && bits < (std::uint64_t(1) << (64 >> group_level_)); ++bits)
+    {
+      std::uint64_t texels = 0;
+      for(int i = 0; i < (64 >> group_level_); ++i)
+        texels |= ((bits >> i) & 1u) ? low_bits(1 << group_level_) << (i << group_level_) : 0;
+      group_spread_.push_back(texels);
+    }
     group_low_bits_ = 0;
     group_multiplier_ = 0;
     for(int i = 0; i < (64 >> group_level_); ++i)
@@ -314,18 +322,27 @@ public:
 
   // The first frame origin (smallest y, then smallest x) with x <= x_max and y <= y_max where
   // the mask fits; x = -1 when there is none.
-  Frame_position find(const Chart_mask& mask, int x_max, int y_max)
+  // The search starts at the row `y_start` (the rows above it known not to fit); `reach`
+  // gets the first row not shown to be unfit: the row found, else y_max + 1 (the rows above
+  // it stay unfit for this mask, and any mask that contains it, while the atlas only fills).
+  Frame_position find(const Chart_mask& mask, int x_max, int y_max, int y_start, int& reach)
   {
+    reach = y_start;
     if(x_max < 0 || y_max < 0)
       return Frame_position();
-    for(int y = first_row(mask); y <= y_max; ++y)
+    int y = std::max(y_start, first_row(mask));
+    for(; y <= y_max; ++y)
     {
       if(!bands_may_fit(mask, y))
         continue;
       const int x = first_fit_in_row(mask, y, x_max);
       if(x <= x_max)
+      {
+        reach = y;
         return Frame_position{x, y};
+      }
     }
+    reach = y;
     return Frame_position();
   }
 
@@ -567,10 +584,13 @@ private:
   // The texels of the 64 from the group `group` that lie in the candidate groups.
   std::uint64_t group_texels(std::uint64_t groups, int group) const
   {
-    const int g = group_level_;
+    const int g = group_level_, per_word = 64 >> g;
+    const std::uint64_t bits = (groups >> group) & low_bits(per_word);
+    if(!group_spread_.empty())
+      return group_spread_[std::size_t(bits)];
     std::uint64_t texels = 0;
-    for(int i = 0; i < (64 >> g) && group + i < 64; ++i)
-      if((groups >> (group + i)) & 1u)
+    for(int i = 0; i < per_word; ++i)
+      if((bits >> i) & 1u)
         texels |= low_bits(1 << g) << (i << g);
     return texels;
   }
@@ -625,6 +645,7 @@ private:
   int group_level_ = 0;     // a summary bit stands for 2^group_level_ texels (64 groups at most)
   std::uint64_t group_low_bits_ = 0;    // the lowest bit of every group
   std::uint64_t group_multiplier_ = 0;  // gathers them (group_bits())
+  std::vector<std::uint64_t> group_spread_;  // for g >= 3: the texels of each set of the groups of a word
   int levels_ = 0;          // k = 0 .. levels_ - 1
   int row_levels_ = 0;      // m = 0 .. row_levels_ - 1
   std::vector<std::uint64_t> bits_;       // occupied texels: size_ rows
