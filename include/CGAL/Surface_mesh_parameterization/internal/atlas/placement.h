@@ -25,14 +25,24 @@
 // Any free rectangle of at least 2^k x 2^m texels is the union of four blocks, so a rectangle
 // test costs four bits whatever its size; a row of V tests 64 positions X at once.
 //
-// A mask is tested in two steps: its bands (rectangles of set cells, one per group of at most
-// 2^max_band_level rows: the columns common to the longest runs of those rows), a necessary
-// condition, then its runs of set cells (row r, start a, length L: one free window of level
-// floor(log2 L) at a and one at a + L - 2^k), the exact test, on the positions that the bands
-// leave. A summary per row of V (bit j: the word j of the row is not zero) tests 64 words of X
-// at once first. The rows Y are scanned from the top; the first row tried is the lowest that
-// every band allows: for each level (k, m) the first row y with a free block of V[k][m]
-// anywhere, kept from one search to the next (placing only removes free blocks).
+// A mask is tested at a frame row Y in four steps, each a necessary condition of the next:
+// 1. its bands (rectangles of set cells over at most 2^max_band_level rows: the columns common
+//    to the longest runs of rows that share 7/8 of them) against the longest free run of each
+//    row of V[0][m] (a band of L columns needs one at least as long in its rows);
+// 2. the bands against the summaries of their levels: per row of V[k][m], bit j when the
+//    texels j 2^g .. (j + 1) 2^g - 1 hold a window (2^g = size / 64 rounded up to a power of
+//    2, at least 1): the groups of X where every band may start;
+// 3. in those groups, the bands' four blocks, 64 positions X at once;
+// 4. the mask's runs of set cells (row r, start a, length L: one window of level
+//    k = floor(log2 L) at a and one at a + L - 2^k), the exact test.
+// The rows Y are scanned from the top, from the lowest that every band allows (per m and L,
+// the first row whose longest free run of V[0][m] reaches L, kept between searches: placing
+// only shortens free runs).
+//
+// Placing a chart updates, per row, the words of each level that the chart's new cells can
+// change (the windows that meet them and start in the free run they were in), a level only
+// where the level below it changed, and the levels that no search still to come reads
+// (their lifetimes, given by packing.h) not at all.
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/raster.h>
 
