@@ -238,6 +238,18 @@ struct Changed_span
   int last = -1;
 };
 
+// The rows first .. last (none when first > last).
+struct Row_range
+{
+  int first = std::numeric_limits<int>::max();
+  int last = -1;
+  void add(int r)
+  {
+    first = std::min(first, r);
+    last = std::max(last, r);
+  }
+};
+
 // The largest set bit of a row below `x`, or -1.
 inline int previous_set_bit(const std::uint64_t* row, int x)
 {
@@ -296,7 +308,7 @@ public:
     summaries_.assign(tables * std::size_t(size), 0);
     floors_.assign(std::size_t(row_levels_) * std::size_t(size + 1), 0);
     longest_.assign(std::size_t(row_levels_) * std::size_t(size), std::make_pair(0, 0));
-    changed_.assign(tables, 0);
+    changed_.assign(tables, Row_range());
     spans_.assign(std::size_t(size), Changed_span());
     lifetimes_.assign(tables, std::numeric_limits<int>::max());
     summary_lifetimes_.assign(tables, std::numeric_limits<int>::max());
@@ -470,7 +482,7 @@ private:
   }
 
   // The windows W_k = V[k][0] of the row y, for the texels of the span occupied: a level changes
-  // only where the level below it did. Marks the levels that changed in `changed_`.
+  // only where the level below it did. Extends the rows changed of each level (`changed_`).
   void update_row_levels(int y, const Changed_span& span, bool all)
   {
     const std::uint64_t* occupied = row(y);
@@ -479,7 +491,8 @@ private:
     bool changed = rewrite_words(table(0, 0), y, a, b, [&](int k) {
       return ~occupied[k] & (k == words_ - 1 ? low_bits(size_ - 64 * k) : ~std::uint64_t(0));
     });
-    changed_[table(0, 0)] |= changed ? 1 : 0;
+    if(changed)
+      changed_[table(0, 0)].add(y);
     if(changed || all)
       update_longest(0, y, span, all);
     for(int level = 1; level < levels_ && (changed || all) && alive(table(level, 0)); ++level)
@@ -489,7 +502,8 @@ private:
       changed = rewrite_words(table(level, 0), y, a, b, [&](int k) {
         return previous[k] & bits_at(previous, words_, 64 * k + (1 << (level - 1)));
       });
-      changed_[table(level, 0)] |= changed ? 1 : 0;
+      if(changed)
+        changed_[table(level, 0)].add(y);
     }
   }
 
@@ -499,19 +513,22 @@ private:
   {
     for(int m = 1; m < row_levels_; ++m)
     {
-      const int half = 1 << (m - 1), r0 = std::max(0, y0 - 2 * half + 1), r1 = std::min(y1, size_ - 2 * half);
+      const int half = 1 << (m - 1);
       for(int level = 0; level < levels_; ++level)
       {
-        if((!changed_[table(level, m - 1)] && !all) || !alive(table(level, m)))
+        const Row_range below = all ? Row_range{y0, y1} : changed_[table(level, m - 1)];
+        if(below.first > below.last || !alive(table(level, m)))
           continue;
         int a = 0, b = 0;
         level_words(level, span, a, b);
         const std::size_t previous = table(level, m - 1), current = table(level, m);
+        const int r0 = std::max(0, below.first - 2 * half + 1), r1 = std::min(below.last, size_ - 2 * half);
         for(int r = r0; r <= r1; ++r)
         {
           const std::uint64_t *top = window(previous, r), *bottom = window(previous, r + half);
           const bool changed = rewrite_words(current, r, a, b, [&](int k) { return top[k] & bottom[k]; });
-          changed_[current] |= changed ? 1 : 0;
+          if(changed)
+            changed_[current].add(r);
           if(level == 0 && (changed || all))
             update_longest(m, r, span, all);
         }
@@ -523,7 +540,7 @@ private:
   // in the union `span` of them.
   void update_rows(int y0, int y1, const Changed_span& span, bool all)
   {
-    std::fill(changed_.begin(), changed_.end(), char(0));
+    std::fill(changed_.begin(), changed_.end(), Row_range());
     for(int y = y0; y <= y1; ++y)
       if(spans_[std::size_t(y)].first <= spans_[std::size_t(y)].last)
         update_row_levels(y, spans_[std::size_t(y)], all);
@@ -663,7 +680,7 @@ private:
   std::vector<std::uint64_t> summaries_;  // per (k, m) and row: bit j when its word j is not 0
   std::vector<int> floors_;               // per m and length: no free run above this row
   std::vector<std::pair<int, int> > longest_;  // per m and row: the longest run of V[0][m] (length, start)
-  std::vector<char> changed_;             // per (k, m): changed by the current update
+  std::vector<Row_range> changed_;        // per (k, m): the rows changed by the current update
   std::vector<Changed_span> spans_;       // per row: its span in the current update
   std::vector<int> lifetimes_;            // per (k, m): kept up to date while fewer charts are placed
   std::vector<int> summary_lifetimes_;    // per (k, m): the same for its summaries
