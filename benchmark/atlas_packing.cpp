@@ -24,16 +24,17 @@
 //              exact one (UV area of its triangles / W x H) and the exact one in a square
 //              of side max(W, H); its seconds: segmentation, parameterization and packing.
 //   raster     pack_atlas_charts() on the same charts (square atlas, --resolution texels,
-//              gutter --gutter texels): utilization (UV area / [0,1]^2), seconds (median of
-//              --runs runs), attempts; --check adds the independent check of test/atlas_check.h
+//              gutter --gutter texels): utilization (UV area / [0,1]^2), seconds (wall clock
+//              and processor time, medians of --runs runs), attempts; --check adds the independent check of test/atlas_check.h
 //              (overlapping pairs, pairs closer than the gutter, UVs outside [0,1]^2).
 //   libnest2d  (built only when Debian's libnest2d-dev is found; --no-nest skips it) the
 //              same normalization (one texel density, smallest box), the convex hull of each
 //              chart as its item, libnest2d's BottomLeftPlacer (--placer=bl, 90-degree turns)
 //              or NfpPlacer (--placer=nfp, 0/90/180/270 degrees, single-threaded) with
-//              FirstFitSelection, min_obj_distance = gutter; the same search of the global
-//              scale (the largest at which every chart goes into one bin). It stops after
-//              --nest-seconds (default 120) with the best scale found so far.
+//              FirstFitSelection, min_obj_distance = gutter, a bin of the atlas less a gutter;
+//              the largest density at which every chart goes into one bin, searched from the
+//              package's density (down by 0.9, then bisection to the same tolerance). It stops
+//              after --nest-seconds (default 120) with the best density found so far.
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/packing.h>
 
@@ -52,6 +53,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -236,20 +238,24 @@ double median(std::vector<double> values)
 struct Raster_figures
 {
   SMP::internal::Atlas_packing packing;
-  double seconds = 0.;
+  double seconds = 0.;      // wall clock (the packer's own statistics)
+  double cpu_seconds = 0.;  // processor time of this process
   std::string check;
 };
 
 Raster_figures run_raster(const Options& options, const std::vector<SMP::internal::Chart_to_pack>& charts)
 {
   Raster_figures figures;
-  std::vector<double> seconds;
+  std::vector<double> seconds, cpu;
   for(int r = 0; r < std::max(1, options.runs); ++r)
   {
+    const std::clock_t start = std::clock();
     figures.packing = SMP::internal::pack_atlas_charts(charts, options.packing);
+    cpu.push_back(double(std::clock() - start) / CLOCKS_PER_SEC);
     seconds.push_back(figures.packing.statistics.seconds);
   }
   figures.seconds = median(seconds);
+  figures.cpu_seconds = median(cpu);
   if(options.check && figures.packing.status == SMP::OK)
   {
     std::vector<std::vector<SMP::internal::Face_indices> > faces;
@@ -258,7 +264,8 @@ Raster_figures run_raster(const Options& options, const std::vector<SMP::interna
     const double gutter = double(options.packing.gutter) / double(options.packing.resolution);
     const mbp_atlas_check::Atlas_check c = mbp_atlas_check::check_atlas(figures.packing.uv, faces, gutter);
     std::ostringstream s;
-    s << c.overlapping_pairs << "/" << c.close_pairs << "/" << c.outside << " (min " << std::setprecision(3)
+    s << c.overlapping_pairs << "/" << c.close_pairs << "/" << c.outside << "/" << c.near_border << " (min "
+      << std::setprecision(3)
       << c.min_distance * options.packing.resolution << " texels)";
     figures.check = s.str();
   }
@@ -316,8 +323,10 @@ bool nest_at_scale(const std::vector<std::vector<Eigen::Vector2d> >& hulls, doub
   std::vector<libnest2d::Item> items;
   for(const auto& hull : hulls)
     items.push_back(nest_item(hull, texels_per_unit));
+  // items are kept min_obj_distance / 2 from the bin's border: a bin of the atlas less one
+  // gutter keeps the atlas's gutter to its border
   const libnest2d::Coord side =
-      libnest2d::Coord((options.packing.resolution + options.packing.gutter) * nest_units);
+      libnest2d::Coord((options.packing.resolution - options.packing.gutter) * nest_units);
   const libnest2d::Box bin(side, side, {side / 2, side / 2});
   const libnest2d::Coord distance = libnest2d::Coord(options.packing.gutter * nest_units);
   std::size_t bins = 0;
@@ -340,8 +349,10 @@ bool nest_at_scale(const std::vector<std::vector<Eigen::Vector2d> >& hulls, doub
   return bins == 1;
 }
 
-// The search of packing.h's search_scale(), with libnest2d as the feasibility test.
-Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::Chart_to_pack>& charts)
+// The largest density at which libnest2d puts every chart into one bin: from `seed` (the
+// package's density, texels per unit), down by 0.9 until one fits, then bisection to the
+// package's tolerance; stopped after --nest-seconds with the best density found.
+Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::Chart_to_pack>& charts, double seed)
 {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&start] {
@@ -356,9 +367,8 @@ Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::C
   }
   const std::vector<std::vector<Eigen::Vector2d> > hulls = normalized_hulls(charts, packed);
   Nest_figures figures;
-  const double bound = options.packing.resolution / std::sqrt(area);
-  double low = 0., high = bound;
-  for(double scale = bound; low == 0. && scale > 0.05 * bound && !figures.stopped; scale *= 0.9)
+  double low = 0., high = HUGE_VAL;
+  for(double scale = seed; low == 0. && scale > 0.05 * seed && !figures.stopped; scale *= 0.9)
   {
     ++figures.attempts;
     (nest_at_scale(hulls, scale, options) ? low : high) = scale;
@@ -366,7 +376,7 @@ Nest_figures run_nest(const Options& options, const std::vector<SMP::internal::C
   }
   while(low > 0. && high > low * (1. + options.packing.density_tolerance) && !figures.stopped)
   {
-    const double scale = std::sqrt(low * high);
+    const double scale = high == HUGE_VAL ? low * 1.05 : std::sqrt(low * high);
     ++figures.attempts;
     (nest_at_scale(hulls, scale, options) ? low : high) = scale;
     figures.stopped = elapsed() > options.nest_seconds;
@@ -433,9 +443,9 @@ void print_header(const Options& options)
   std::cout << "resolution " << options.packing.resolution << ", gutter " << options.packing.gutter
             << " texels; libnest2d placer " << options.placer << "\n\n"
             << "| mesh | faces | charts | xatlas util (printed / exact / square) | xatlas s | raster util | "
-               "raster s (raster + placement) | attempts | libnest2d util | libnest2d s |"
-            << (options.check ? " check (overlaps/close/outside) |" : "") << "\n"
-            << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|" << (options.check ? "---|" : "") << "\n";
+               "raster s (raster + placement) | raster CPU s | attempts | libnest2d util | libnest2d s |"
+            << (options.check ? " check (overlaps/close/outside/near border) |" : "") << "\n"
+            << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|" << (options.check ? "---|" : "") << "\n";
 }
 
 // One row of the table.
@@ -455,11 +465,13 @@ void measure_mesh(const Options& options, const fs::path& mesh, const fs::path& 
             << std::setprecision(3) << std::stod(x.fields.at("seconds")) << " | " << std::setprecision(4)
             << r.packing.utilization << (r.packing.status == SMP::OK ? "" : " (failed)") << " | "
             << std::setprecision(3) << r.seconds << " (" << r.packing.statistics.raster_seconds << " + "
-            << r.packing.statistics.placement_seconds << ") | " << r.packing.statistics.attempts << " | ";
+            << r.packing.statistics.placement_seconds << ") | " << r.cpu_seconds << " | "
+            << r.packing.statistics.attempts << " | ";
 #ifdef MBP_HAS_LIBNEST2D
   if(options.nest)
   {
-    const Nest_figures n = run_nest(options, x.charts);
+    const double seed = std::sqrt(r.packing.statistics.texel_density) * options.packing.resolution;
+    const Nest_figures n = run_nest(options, x.charts, seed > 0. ? seed : 1.);
     std::cout << std::setprecision(4) << n.utilization << (n.stopped ? " (stopped)" : "") << " | "
               << std::setprecision(2) << n.seconds << " |";
   }

@@ -8,12 +8,14 @@
 // Author(s)     : The measured boundary parameterization authors
 
 // An independent check of a packed atlas (test_atlas_packing.cpp, benchmark/atlas_packing.cpp):
-// it knows nothing of the packer's rasters. Every UV finite and inside [0,1]^2; no two
-// triangles of different charts overlap (exact predicates: an edge of one crosses an edge of
-// the other, or a vertex of one lies in the other); the smallest distance between triangles of
-// different charts, over the pairs whose boxes, grown by the gutter, meet
+// it knows nothing of the packer's rasters. Every UV finite and inside [0,1]^2, and at least
+// the gutter away from its border; no two triangles of different charts overlap (exact
+// predicates: an edge of one crosses an edge of the other, or a vertex of one lies in the
+// other); the smallest distance between triangles of different charts (the smallest distance
+// between their edges), over the pairs whose boxes, grown by the gutter, meet
 // (CGAL::box_self_intersection_d). A chart without triangles counts each of its UVs as a
-// point.
+// point. And, per chart, whether its placed UVs are a similarity of its input UVs: the
+// ratios of the edge lengths, and the orientations of its triangles.
 
 #ifndef MBP_TEST_ATLAS_CHECK_H
 #define MBP_TEST_ATLAS_CHECK_H
@@ -39,6 +41,7 @@ struct Atlas_check
 {
   std::size_t non_finite = 0;          // UVs that are NaN or infinite
   std::size_t outside = 0;             // UVs outside [0,1]^2
+  std::size_t near_border = 0;         // UVs closer than the gutter to the border of [0,1]^2
   std::size_t overlapping_pairs = 0;   // pairs of triangles of different charts that meet
   std::size_t close_pairs = 0;         // pairs of different charts closer than the gutter
   double min_distance = std::numeric_limits<double>::infinity();  // between different charts
@@ -93,6 +96,8 @@ Atlas_check check_atlas(const std::vector<std::vector<Eigen::Vector2d> >& uv, co
     {
       result.non_finite += std::isfinite(p.x()) && std::isfinite(p.y()) ? 0 : 1;
       result.outside += p.x() >= 0. && p.x() <= 1. && p.y() >= 0. && p.y() <= 1. ? 0 : 1;
+      const double border = std::min(std::min(p.x(), 1. - p.x()), std::min(p.y(), 1. - p.y()));
+      result.near_border += border >= gutter - 1e-12 ? 0 : 1;
     }
     const auto point = [&](std::size_t v) { return K::Point_2(uv[c][v].x(), uv[c][v].y()); };
     for(const auto& f : faces[c])
@@ -118,9 +123,64 @@ Atlas_check check_atlas(const std::vector<std::vector<Eigen::Vector2d> >& uv, co
     const bool meet = triangles_meet(triangles[a.info()], triangles[b.info()], distance);
     result.overlapping_pairs += meet ? 1 : 0;
     result.min_distance = std::min(result.min_distance, distance);
-    result.close_pairs += distance < gutter * (1. - 1e-9) ? 1 : 0;
+    result.close_pairs += distance < gutter - 1e-12 ? 1 : 0;
   });
   return result;
+}
+
+// Whether a chart's placed UVs are a similarity of its input UVs (no reflection).
+struct Shape_check
+{
+  double ratio = 0.;            // placed length / input length of the first edge measured
+  double max_deviation = 0.;    // the largest |ratio of an edge / ratio - 1|
+  std::size_t reflected = 0;    // triangles whose orientation changed
+  std::size_t edges = 0;        // edges measured (input length above `shortest`)
+};
+
+// The check of one chart: every triangle edge (or, without triangles, the segment from the
+// first UV to each other) longer than `shortest` in the input.
+template <class Face>
+Shape_check check_shape(const std::vector<Eigen::Vector2d>& input, const std::vector<Eigen::Vector2d>& placed,
+                        const std::vector<Face>& faces, double shortest)
+{
+  Shape_check c;
+  const auto measure = [&](std::size_t a, std::size_t b) {
+    const double in = (input[a] - input[b]).norm(), out = (placed[a] - placed[b]).norm();
+    if(!(in > shortest))
+      return;
+    if(c.edges++ == 0)
+      c.ratio = out / in;
+    else  // (a chart placed as a point: every ratio 0)
+      c.max_deviation = std::max(c.max_deviation, c.ratio > 0. ? std::abs(out / in / c.ratio - 1.) : out / in);
+  };
+  const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& d) {
+    return (b - a).x() * (d - a).y() - (b - a).y() * (d - a).x();
+  };
+  for(const Face& f : faces)
+  {
+    const std::size_t i = std::size_t(f[0]), j = std::size_t(f[1]), k = std::size_t(f[2]);
+    measure(i, j);
+    measure(j, k);
+    measure(k, i);
+    const double before = cross(input[i], input[j], input[k]), after = cross(placed[i], placed[j], placed[k]);
+    c.reflected += (before > 0. && after < 0.) || (before < 0. && after > 0.) ? 1 : 0;
+  }
+  for(std::size_t v = 1; faces.empty() && v < input.size(); ++v)
+    measure(0, v);
+  return c;
+}
+
+// The total area of the triangles of a chart.
+template <class Face>
+double uv_area(const std::vector<Eigen::Vector2d>& uv, const std::vector<Face>& faces)
+{
+  double area = 0.;
+  for(const Face& f : faces)
+  {
+    const Eigen::Vector2d a = uv[std::size_t(f[0])], b = uv[std::size_t(f[1])], d = uv[std::size_t(f[2])];
+    area += 0.5 * std::abs((b - a).x() * (d - a).y() - (b - a).y() * (d - a).x());
+  }
+  return area;
 }
 
 } // namespace mbp_atlas_check

@@ -25,14 +25,24 @@
 // Any free rectangle of at least 2^k x 2^m texels is the union of four blocks, so a rectangle
 // test costs four bits whatever its size; a row of V tests 64 positions X at once.
 //
-// A mask is tested in two steps: its bands (rectangles of set cells, one per group of at most
-// 2^max_band_level rows: the columns common to the longest runs of those rows), a necessary
-// condition, then its runs of set cells (row r, start a, length L: one free window of level
-// floor(log2 L) at a and one at a + L - 2^k), the exact test, on the positions that the bands
-// leave. A summary per row of V (bit j: the word j of the row is not zero) tests 64 words of X
-// at once first. The rows Y are scanned from the top; the first row tried is the lowest that
-// every band allows: for each level (k, m) the first row y with a free block of V[k][m]
-// anywhere, kept from one search to the next (placing only removes free blocks).
+// A mask is tested at a frame row Y in four steps, each a necessary condition of the next:
+// 1. its bands (rectangles of set cells over at most 2^max_band_level rows: the columns common
+//    to the longest runs of rows that share 7/8 of them) against the longest free run of each
+//    row of V[0][m] (a band of L columns needs one at least as long in its rows);
+// 2. the bands against the summaries of their levels: per row of V[k][m], bit j when the
+//    texels j 2^g .. (j + 1) 2^g - 1 hold a window (2^g = size / 64 rounded up to a power of
+//    2, at least 1): the groups of X where every band may start;
+// 3. in those groups, the bands' four blocks, 64 positions X at once;
+// 4. the mask's runs of set cells (row r, start a, length L: one window of level
+//    k = floor(log2 L) at a and one at a + L - 2^k), the exact test.
+// The rows Y are scanned from the top, from the lowest that every band allows (per m and L,
+// the first row whose longest free run of V[0][m] reaches L, kept between searches: placing
+// only shortens free runs).
+//
+// Placing a chart updates, per row, the words of each level that the chart's new cells can
+// change (the windows that meet them and start in the free run they were in), a level only
+// where the level below it changed, and the levels that no search still to come reads
+// (their lifetimes, given by packing.h) not at all.
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/raster.h>
 
@@ -228,6 +238,18 @@ struct Changed_span
   int last = -1;
 };
 
+// The rows first .. last (none when first > last).
+struct Row_range
+{
+  int first = std::numeric_limits<int>::max();
+  int last = -1;
+  void add(int r)
+  {
+    first = std::min(first, r);
+    last = std::max(last, r);
+  }
+};
+
 // The largest set bit of a row below `x`, or -1.
 inline int previous_set_bit(const std::uint64_t* row, int x)
 {
@@ -263,6 +285,14 @@ public:
     group_level_ = 0;
     while((64 << group_level_) < size)
       ++group_level_;
+    group_spread_.clear();
+    for(std::uint64_t bits = 0; group_level_ >= 3 && bits < (std::uint64_t(1) << (64 >> group_level_)); ++bits)
+    {
+      std::uint64_t texels = 0;
+      for(int i = 0; i < (64 >> group_level_); ++i)
+        texels |= ((bits >> i) & 1u) ? low_bits(1 << group_level_) << (i << group_level_) : 0;
+      group_spread_.push_back(texels);
+    }
     group_low_bits_ = 0;
     group_multiplier_ = 0;
     for(int i = 0; i < (64 >> group_level_); ++i)
@@ -278,7 +308,7 @@ public:
     summaries_.assign(tables * std::size_t(size), 0);
     floors_.assign(std::size_t(row_levels_) * std::size_t(size + 1), 0);
     longest_.assign(std::size_t(row_levels_) * std::size_t(size), std::make_pair(0, 0));
-    changed_.assign(tables, 0);
+    changed_.assign(tables, Row_range());
     spans_.assign(std::size_t(size), Changed_span());
     lifetimes_.assign(tables, std::numeric_limits<int>::max());
     summary_lifetimes_.assign(tables, std::numeric_limits<int>::max());
@@ -314,18 +344,27 @@ public:
 
   // The first frame origin (smallest y, then smallest x) with x <= x_max and y <= y_max where
   // the mask fits; x = -1 when there is none.
-  Frame_position find(const Chart_mask& mask, int x_max, int y_max)
+  // The search starts at the row `y_start` (the rows above it known not to fit); `reach`
+  // gets the first row not shown to be unfit: the row found, else y_max + 1 (the rows above
+  // it stay unfit for this mask, and any mask that contains it, while the atlas only fills).
+  Frame_position find(const Chart_mask& mask, int x_max, int y_max, int y_start, int& reach)
   {
+    reach = y_start;
     if(x_max < 0 || y_max < 0)
       return Frame_position();
-    for(int y = first_row(mask); y <= y_max; ++y)
+    int y = std::max(y_start, first_row(mask));
+    for(; y <= y_max; ++y)
     {
       if(!bands_may_fit(mask, y))
         continue;
       const int x = first_fit_in_row(mask, y, x_max);
       if(x <= x_max)
+      {
+        reach = y;
         return Frame_position{x, y};
+      }
     }
+    reach = y;
     return Frame_position();
   }
 
@@ -443,7 +482,7 @@ private:
   }
 
   // The windows W_k = V[k][0] of the row y, for the texels of the span occupied: a level changes
-  // only where the level below it did. Marks the levels that changed in `changed_`.
+  // only where the level below it did. Extends the rows changed of each level (`changed_`).
   void update_row_levels(int y, const Changed_span& span, bool all)
   {
     const std::uint64_t* occupied = row(y);
@@ -452,7 +491,8 @@ private:
     bool changed = rewrite_words(table(0, 0), y, a, b, [&](int k) {
       return ~occupied[k] & (k == words_ - 1 ? low_bits(size_ - 64 * k) : ~std::uint64_t(0));
     });
-    changed_[table(0, 0)] |= changed ? 1 : 0;
+    if(changed)
+      changed_[table(0, 0)].add(y);
     if(changed || all)
       update_longest(0, y, span, all);
     for(int level = 1; level < levels_ && (changed || all) && alive(table(level, 0)); ++level)
@@ -462,7 +502,8 @@ private:
       changed = rewrite_words(table(level, 0), y, a, b, [&](int k) {
         return previous[k] & bits_at(previous, words_, 64 * k + (1 << (level - 1)));
       });
-      changed_[table(level, 0)] |= changed ? 1 : 0;
+      if(changed)
+        changed_[table(level, 0)].add(y);
     }
   }
 
@@ -472,19 +513,22 @@ private:
   {
     for(int m = 1; m < row_levels_; ++m)
     {
-      const int half = 1 << (m - 1), r0 = std::max(0, y0 - 2 * half + 1), r1 = std::min(y1, size_ - 2 * half);
+      const int half = 1 << (m - 1);
       for(int level = 0; level < levels_; ++level)
       {
-        if((!changed_[table(level, m - 1)] && !all) || !alive(table(level, m)))
+        const Row_range below = all ? Row_range{y0, y1} : changed_[table(level, m - 1)];
+        if(below.first > below.last || !alive(table(level, m)))
           continue;
         int a = 0, b = 0;
         level_words(level, span, a, b);
         const std::size_t previous = table(level, m - 1), current = table(level, m);
+        const int r0 = std::max(0, below.first - 2 * half + 1), r1 = std::min(below.last, size_ - 2 * half);
         for(int r = r0; r <= r1; ++r)
         {
           const std::uint64_t *top = window(previous, r), *bottom = window(previous, r + half);
           const bool changed = rewrite_words(current, r, a, b, [&](int k) { return top[k] & bottom[k]; });
-          changed_[current] |= changed ? 1 : 0;
+          if(changed)
+            changed_[current].add(r);
           if(level == 0 && (changed || all))
             update_longest(m, r, span, all);
         }
@@ -496,7 +540,7 @@ private:
   // in the union `span` of them.
   void update_rows(int y0, int y1, const Changed_span& span, bool all)
   {
-    std::fill(changed_.begin(), changed_.end(), char(0));
+    std::fill(changed_.begin(), changed_.end(), Row_range());
     for(int y = y0; y <= y1; ++y)
       if(spans_[std::size_t(y)].first <= spans_[std::size_t(y)].last)
         update_row_levels(y, spans_[std::size_t(y)], all);
@@ -567,10 +611,13 @@ private:
   // The texels of the 64 from the group `group` that lie in the candidate groups.
   std::uint64_t group_texels(std::uint64_t groups, int group) const
   {
-    const int g = group_level_;
+    const int g = group_level_, per_word = 64 >> g;
+    const std::uint64_t bits = (groups >> group) & low_bits(per_word);
+    if(!group_spread_.empty())
+      return group_spread_[std::size_t(bits)];
     std::uint64_t texels = 0;
-    for(int i = 0; i < (64 >> g) && group + i < 64; ++i)
-      if((groups >> (group + i)) & 1u)
+    for(int i = 0; i < per_word; ++i)
+      if((bits >> i) & 1u)
         texels |= low_bits(1 << g) << (i << g);
     return texels;
   }
@@ -625,6 +672,7 @@ private:
   int group_level_ = 0;     // a summary bit stands for 2^group_level_ texels (64 groups at most)
   std::uint64_t group_low_bits_ = 0;    // the lowest bit of every group
   std::uint64_t group_multiplier_ = 0;  // gathers them (group_bits())
+  std::vector<std::uint64_t> group_spread_;  // for g >= 3: the texels of each set of the groups of a word
   int levels_ = 0;          // k = 0 .. levels_ - 1
   int row_levels_ = 0;      // m = 0 .. row_levels_ - 1
   std::vector<std::uint64_t> bits_;       // occupied texels: size_ rows
@@ -632,7 +680,7 @@ private:
   std::vector<std::uint64_t> summaries_;  // per (k, m) and row: bit j when its word j is not 0
   std::vector<int> floors_;               // per m and length: no free run above this row
   std::vector<std::pair<int, int> > longest_;  // per m and row: the longest run of V[0][m] (length, start)
-  std::vector<char> changed_;             // per (k, m): changed by the current update
+  std::vector<Row_range> changed_;        // per (k, m): the rows changed by the current update
   std::vector<Changed_span> spans_;       // per row: its span in the current update
   std::vector<int> lifetimes_;            // per (k, m): kept up to date while fewer charts are placed
   std::vector<int> summary_lifetimes_;    // per (k, m): the same for its summaries
