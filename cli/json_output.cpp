@@ -66,9 +66,8 @@ void write_center(Json_writer& j, const Uv_layout& layout)
   j.end_object();
 }
 
-// the members from the command line: input, generated_mesh, mesh, output, svg, solver,
-// center_locator, border_distance
-void write_command_line(Json_writer& j, const Run_facts& f)
+// input, generated_mesh, mesh, output, svg: the files of the run (both modes)
+void write_files(Json_writer& j, const Run_facts& f)
 {
   const Options& o = f.options;
   if(f.generated)
@@ -82,6 +81,14 @@ void write_command_line(Json_writer& j, const Run_facts& f)
     j.null_member("svg");
   else
     j.member("svg", o.svg);
+}
+
+// the members from the command line: input, generated_mesh, mesh, output, svg, solver,
+// center_locator, border_distance
+void write_command_line(Json_writer& j, const Run_facts& f)
+{
+  const Options& o = f.options;
+  write_files(j, f);
   j.member("solver", solver_name(o.solver));
   j.member("center_locator", o.fixed_center ? std::string("vertex") : o.center);
   j.member("border_distance", o.distance);
@@ -260,17 +267,7 @@ std::string json_atlas_document(const Run_facts& f)
   Json_writer j;
   j.begin_object();
   j.member("mode", mode_name(o.mode));
-  if(f.generated)
-    j.null_member("input");
-  else
-    j.member("input", o.input);
-  j.member("generated_mesh", f.generated);
-  j.member("mesh", f.mesh_name);
-  j.member("output", o.output);
-  if(o.svg.empty())
-    j.null_member("svg");
-  else
-    j.member("svg", o.svg);
+  write_files(j, f);
   j.member("resolution", std::size_t(o.resolution));
   j.member("gutter", std::size_t(o.gutter));
   j.member("points", a.soup.points.size());
