@@ -78,11 +78,10 @@ echo "mutation_check: sources ($source_mode) in $src, build in $build"
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DMBP_BUILD_DOC=OFF -DMBP_BUILD_BENCHMARK=OFF \
       -DMBP_BUILD_EXAMPLES=OFF > "$log/configure.txt" 2>&1 || { echo "configure failed: $log/configure.txt" >&2; exit 2; }
 
-# the test executable that holds a suite: CTest's entry test_SUITE runs it (test/CMakeLists.txt
-# groups several suites in one executable)
+# the test executable that holds a suite: the one CTest's entry test_SUITE runs (read from
+# the build's CTestTestfile.cmake; test/CMakeLists.txt groups several suites in one executable)
 suite_executable() {  # CTest entry
-  ctest --test-dir "$build" -N -V -R "^$1\$" 2>/dev/null \
-    | sed -n 's/^.*Test command: \([^ ]*\).*$/\1/p' | head -n 1
+  sed -n "s|^add_test($1 \"\\([^\"]*\\)\".*|\\1|p" "$build/test/CTestTestfile.cmake" | head -n 1
 }
 
 # build the executable of one suite, then run the suite's core tier; prints "pass", "fail",

@@ -35,6 +35,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
 #include "cli/mesh_input.h"
@@ -127,13 +128,15 @@ struct Temporary_file
 void parameterize_and_check(const Mesh& mesh, halfedge_descriptor bhd)
 {
   typedef SMP::Measured_conformal_parameterizer_3<Mesh> Parameterizer;
-  Parameterizer parameterizer;
+  const Parameterizer parameterizer;
+  SMP::Parameterization_report report;
   auto uvmap = get(CGAL::dynamic_vertex_property_t<Kernel::Point_2>(), mesh);
   auto parameterized = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
   for(vertex_descriptor v : vertices(mesh))
     put(parameterized, v, false);
   const SMP::Error_code status =
-    parameterizer.parameterize(mesh, bhd, uvmap, get(CGAL::dynamic_vertex_property_t<int>(), mesh), parameterized);
+    parameterizer.parameterize(mesh, bhd, uvmap, get(CGAL::dynamic_vertex_property_t<int>(), mesh), parameterized,
+                               &report);
 
   if(status != SMP::OK)
   {
@@ -142,7 +145,7 @@ void parameterize_and_check(const Mesh& mesh, halfedge_descriptor bhd)
       invariant_failed("a failure without a message", std::to_string(int(status)));
     // the program's explanations of some codes
     if(status == SMP::ERROR_DEGENERATE_FACE)
-      (void)mbp_cli::find_degenerate_face(mesh, Parameterizer::Patch::degenerate_face_threshold());
+      (void)mbp_cli::find_degenerate_face(mesh, 1e-12);  // the package's test: 2A <= 1e-12 l^2
     else if(status == SMP::ERROR_NON_FINITE_COORDINATES)
       (void)mbp_cli::find_non_finite_vertex(mesh);
     outcome(std::string("parameterizer: ") + message);
@@ -164,7 +167,7 @@ void parameterize_and_check(const Mesh& mesh, halfedge_descriptor bhd)
   if(!SMP::is_one_to_one_uv_map(mesh, faces(mesh), uvmap))
     invariant_failed("status OK but the UV map is not one-to-one (flipped or overlapping triangles)");
   outcome("parameterized: " + std::to_string(num_vertices(mesh)) + " vertices, one-to-one" +
-          (parameterizer.last_report().repaired ? " (repaired)" : ""));
+          (report.repaired ? " (repaired)" : ""));
 }
 
 } // namespace
