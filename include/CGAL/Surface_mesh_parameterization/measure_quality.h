@@ -239,10 +239,12 @@ private:
       p[k] = indexer.points()[std::size_t(v[k])];
       const auto& y = get(uvmap, target(h, tm));
       uv[k] = Eigen::Vector2d(CGAL::to_double(y.x()), CGAL::to_double(y.y()));
-      angle_sums.resize(indexer.points().size(), 0.);
-      on_border.resize(indexer.points().size(), false);
       if(is_border(opposite(h, tm), tm))  // the edge into v[k] is on a border
-        on_border[std::size_t(v[k])] = on_border[std::size_t(indexer.add(source(h, tm), vpm))] = true;
+      {
+        const int s = indexer.add(source(h, tm), vpm);  // (may index a new vertex: resize after)
+        on_border.resize(indexer.points().size(), false);
+        on_border[std::size_t(v[k])] = on_border[std::size_t(s)] = true;
+      }
       ++k;
     }
     angle_sums.resize(indexer.points().size(), 0.);
