@@ -85,10 +85,10 @@ struct Atlas_report
   double area_spread = 0.;
   /// \name Wall-clock time of the steps (seconds)
   /// @{
-  double repair_seconds = 0.;
-  double chart_seconds = 0.;
-  double packing_seconds = 0.;
-  double total_seconds = 0.;
+  double repair_seconds = 0.;   ///< the repair of the input (step 1)
+  double chart_seconds = 0.;    ///< the charts: flattening, splits, figures (step 2)
+  double packing_seconds = 0.;  ///< the packing into the square (step 3)
+  double total_seconds = 0.;    ///< the whole call
   /// @}
 };
 

@@ -221,10 +221,13 @@ inline std::size_t input_polygon_chart(const Atlas_input& input, const Atlas_lay
 ///         to `double` (e.g. `std::vector<Point_3>` of any CGAL kernel, or `std::array<double, 3>`)
 /// \tparam PolygonRange a range of polygons, each a range of indices into `points` (any size
 ///         from 1 up)
+/// \param points the points of the soup
+/// \param polygons the polygons of the soup
 /// \param corner_uvs receives, per input polygon, the UV of each of its corners
 /// \param polygon_charts receives the chart id of each input polygon (an index into
 ///        `report->charts`): the chart of its first corner. A polygon whose triangles fall into
 ///        two charts has each corner in its own chart's place
+/// \param options the resolution and the gutter of the texture (`Atlas_options`)
 /// \param report when not null, receives what was repaired, the charts and the packing
 /// \return `OK`, `ERROR_EMPTY_MESH` (no polygon with three distinct points and nonzero
 ///         area), `ERROR_NON_FINITE_COORDINATES` (a point is infinite or NaN),
