@@ -153,6 +153,25 @@ inline Soup moebius_strip_soup(int n)
   return s;
 }
 
+// A closed torus of n x n quads sheared so that one diagonal of each quad runs along a
+// meridian: the shortest meridian loop crosses every quad it meets through that diagonal
+// (vertex (i, j) at the angles 2 pi (i - j) / n around the axis and 2 pi j / n around the tube).
+inline Soup sheared_quad_torus(int n)
+{
+  Soup s;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      const double u = 2. * M_PI * (i - j) / n, v = 2. * M_PI * j / n;
+      s.points.push_back({{(2. + 0.7 * std::cos(v)) * std::cos(u), (2. + 0.7 * std::cos(v)) * std::sin(u), 0.7 * std::sin(v)}});
+    }
+  auto id = [n](int i, int j) { return std::size_t(((i + n) % n) * n + (j + n) % n); };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return s;
+}
+
 } // namespace mbp_test
 
 #endif // MBP_TEST_ATLAS_SOUPS_H

@@ -300,6 +300,19 @@ BOOST_AUTO_TEST_CASE(quads_and_a_pentagon)
   BOOST_CHECK_EQUAL(clockwise_polygons(s.points, s.faces, a), 0u);
 }
 
+// The seams of a closed surface of quads go around the quads, never through a diagonal: every
+// quad keeps one UV per corner (a quad cut by a seam would get corners from both sides: its UV
+// polygon would overlap its neighbors' or turn clockwise).
+BOOST_AUTO_TEST_CASE(seams_keep_polygons_whole)
+{
+  const Soup s = mbp_test::sheared_quad_torus(16);
+  const Atlas_output a = check_soup(s, false);  // non-planar quads
+  BOOST_CHECK_EQUAL(a.report.repair.triangulated_polygons, s.faces.size());
+  BOOST_CHECK_EQUAL(a.report.charts.size(), 1u);
+  BOOST_CHECK_EQUAL(a.report.charts[0].flattening, SMP::SEAMED_CHART);
+  BOOST_CHECK_EQUAL(clockwise_polygons(s.points, s.faces, a), 0u);
+}
+
 BOOST_AUTO_TEST_CASE(moebius_strip)
 {
   const Soup s = mbp_test::moebius_strip_soup(12);

@@ -589,6 +589,39 @@ BOOST_AUTO_TEST_CASE(report_is_optional_and_points_come_from_the_named_parameter
   BOOST_CHECK_CLOSE(s.report.seam_length, t.report.seam_length, 1e-9);
 }
 
+// The named parameter edge_is_constrained_map: the edges along the meridians of a torus
+// (where the shortest meridian loop runs) are avoided; the seams still cut a disk, and their
+// reported length is the geometric one (check_disk()).
+BOOST_AUTO_TEST_CASE(seams_avoid_constrained_edges)
+{
+  Mesh mesh = make(torus(24, 12));
+  auto meridian = mesh.add_property_map<edge_descriptor, bool>("e:meridian", false).first;
+  for(edge_descriptor e : edges(mesh))
+  {
+    const K::Point_3 &p = mesh.point(source(halfedge(e, mesh), mesh)), &q = mesh.point(target(halfedge(e, mesh), mesh));
+    meridian[e] = std::abs(std::atan2(p.y(), p.x()) - std::atan2(q.y(), q.x())) < 1e-9;
+  }
+  auto constrained_seams = [&](const Mesh& m, const Seams& s) {
+    std::size_t count = 0;
+    for(edge_descriptor e : edges(m))
+      count += (get(s.edges, e) && meridian[e]) ? 1 : 0;
+    return count;
+  };
+  const Seams free = compute(mesh);
+  BOOST_REQUIRE_GT(constrained_seams(mesh, free), 0u);  // the free cut runs along a meridian
+  Seams s;
+  s.edges = mesh.add_property_map<edge_descriptor, bool>("e:seam_constrained", false).first;
+  s.vertices = mesh.add_property_map<vertex_descriptor, bool>("v:seam_constrained", false).first;
+  s.status = SMP::compute_disk_seams(mesh, s.edges, s.vertices, {}, &s.report,
+                                     CGAL::parameters::edge_is_constrained_map(meridian));
+  check_disk(mesh, s);
+  BOOST_CHECK_EQUAL(constrained_seams(mesh, s), 0u);
+  BOOST_CHECK_EQUAL(s.report.number_of_loops, 2);
+  BOOST_CHECK_GT(s.report.seam_length, free.report.seam_length);  // a zigzag instead
+  BOOST_CHECK_LT(s.report.seam_length, 3. * free.report.seam_length);
+  flatten_and_check(mesh, s);
+}
+
 // ---------------------------------------------------------------- shortening
 
 // A torus cut along a meridian that makes a detour, and the inner equator: shortening

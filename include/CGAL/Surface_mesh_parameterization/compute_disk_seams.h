@@ -23,6 +23,7 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
+#include <CGAL/property_map.h>
 #include <CGAL/Named_function_parameters.h>
 
 #include <chrono>
@@ -48,16 +49,17 @@ inline Error_code error_code_of(Disk_seams_problem problem)
 }
 
 // The seams of a mesh into the maps and the report: the indexed surface, its cut, the maps.
-template <class TriangleMesh, class VertexPointMap, class SeamEdgeMap, class SeamVertexMap>
-Disk_seams_problem cut_and_write_seams(const TriangleMesh& tm, VertexPointMap vpm, SeamEdgeMap seam_edges,
-                                      SeamVertexMap seam_vertices, const Disk_seams_options& options,
-                                      Disk_seams_report& report)
+template <class TriangleMesh, class VertexPointMap, class AvoidedEdgeMap, class SeamEdgeMap, class SeamVertexMap>
+Disk_seams_problem cut_and_write_seams(const TriangleMesh& tm, VertexPointMap vpm, AvoidedEdgeMap avoided,
+                                      SeamEdgeMap seam_edges, SeamVertexMap seam_vertices,
+                                      const Disk_seams_options& options, Disk_seams_report& report)
 {
   Indexed_surface s;
   Surface_indexer<TriangleMesh> indexer(tm, s, report);
   Disk_seams_problem problem = indexer.index(vpm);
   if(problem != NO_PROBLEM)
     return problem;
+  indexer.avoid_edges(avoided);
   report.genus = s.genus();
   report.number_of_border_loops = s.border_loops.size();
   std::vector<char> cut;
@@ -132,6 +134,12 @@ Disk_seams_problem cut_and_write_seams(const TriangleMesh& tm, VertexPointMap vp
 /// \param np an optional sequence of named parameters among the ones listed below:
 ///   - `vertex_point_map`: a model of `ReadablePropertyMap` from `vertex_descriptor` to a 3D
 ///     point type of a CGAL kernel; default: `get(CGAL::vertex_point, tm)`.
+///   - `edge_is_constrained_map`: a model of `ReadablePropertyMap` from `edge_descriptor` to
+///     `bool`: the edges the seams avoid (the diagonals that triangulate a polygon of the
+///     user's mesh, say). A constrained edge counts, in every length the cut compares, as
+///     longer than all the other edges together: a seam runs along one only where every cut
+///     of the surface would cross more (never when the constrained edges are the diagonals of
+///     polygons, since a cut can go around a polygon). Default: no edge is constrained.
 /// \return `OK`; `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 ///         `ERROR_NON_FINITE_COORDINATES`, `ERROR_DEGENERATE_FACE` (with cones),
 ///         `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`, or `ERROR_NO_TOPOLOGICAL_DISC` for a
@@ -151,7 +159,10 @@ Error_code compute_disk_seams(const TriangleMesh& tm, SeamEdgeMap seam_edges, Se
   r = Disk_seams_report();
   const auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
                                                 get_const_property_map(vertex_point, tm));
-  r.problem = internal::cut_and_write_seams(tm, vpm, seam_edges, seam_vertices, options, r);
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor edge_descriptor;
+  const auto avoided = parameters::choose_parameter(parameters::get_parameter(np, internal_np::edge_is_constrained),
+                                                    Constant_property_map<edge_descriptor, bool>(false));
+  r.problem = internal::cut_and_write_seams(tm, vpm, avoided, seam_edges, seam_vertices, options, r);
   r.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return internal::error_code_of(r.problem);
 }

@@ -43,7 +43,16 @@ struct Atlas_triangles
 {
   std::vector<Eigen::Vector3d> points;
   std::vector<Face_indices> faces;
+  std::vector<std::size_t> face_polygon;  // the input polygon of each face (empty: the face itself)
+
+  std::size_t polygon(std::size_t f) const { return face_polygon.empty() ? f : face_polygon[f]; }
 };
+
+// Whether faces f and g (of the triangle set) triangulate one input polygon.
+inline bool same_polygon(const Atlas_triangles& t, std::size_t f, std::size_t g)
+{
+  return t.polygon(f) == t.polygon(g);
+}
 
 // A chart: faces of the triangle set and the UV of each face corner (corner k of a face is
 // its vertex faces[f][k]).
@@ -158,9 +167,31 @@ inline std::vector<int> face_distances(const std::vector<std::array<int, 3> >& n
   return distance;
 }
 
+// The part of each face of a subset: the part `side` gives to the first face of its input
+// polygon, so that no input polygon is split; when that leaves a part empty, the polygon of the
+// last face goes to it (or the last face alone, when the subset is one polygon).
+inline std::vector<int> parts_keeping_polygons(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
+                                               const std::vector<int>& side)
+{
+  std::map<std::size_t, int> polygon_part;
+  std::vector<int> part(faces.size());
+  int count = 0;
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    count += part[i] = polygon_part.emplace(t.polygon(faces[i]), side[i]).first->second;
+  if((count == 0 || count == int(faces.size())) && faces.size() > 1)
+  {
+    const bool one_polygon = polygon_part.size() == 1;
+    for(std::size_t i = 0; i < faces.size(); ++i)
+      if(one_polygon ? i + 1 == faces.size() : same_polygon(t, faces[i], faces.back()))
+        part[i] = 1 - part[i];
+  }
+  return part;
+}
+
 // A connected face subset split in two: the faces nearer (in faces, ties to the first) to one
-// of two far apart faces (the farthest from the first face, and the farthest from that one).
-// Each part is then split into its connected components by the caller.
+// of two far apart faces (the farthest from the first face, and the farthest from that one),
+// input polygons kept whole (parts_keeping_polygons()). Each part is then split into its
+// connected components by the caller.
 inline std::array<std::vector<std::size_t>, 2> split_in_two(const Atlas_triangles& t, const std::vector<std::size_t>& faces)
 {
   const std::vector<std::array<int, 3> > neighbors = subset_neighbors(t, faces);
@@ -170,14 +201,13 @@ inline std::array<std::vector<std::size_t>, 2> split_in_two(const Atlas_triangle
   const std::size_t a = farthest(face_distances(neighbors, 0));
   const std::vector<int> from_a = face_distances(neighbors, a);
   const std::vector<int> from_b = face_distances(neighbors, farthest(from_a));
+  std::vector<int> side(faces.size());
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    side[i] = (from_b[i] < from_a[i]) ? 1 : 0;
+  const std::vector<int> part = parts_keeping_polygons(t, faces, side);
   std::array<std::vector<std::size_t>, 2> parts;
   for(std::size_t i = 0; i < faces.size(); ++i)
-    parts[(from_b[i] < from_a[i]) ? 1 : 0].push_back(faces[i]);
-  if(parts[1].empty() && faces.size() > 1)  // a single face at distance 0 from both
-  {
-    parts[1].push_back(parts[0].back());
-    parts[0].pop_back();
-  }
+    parts[std::size_t(part[i])].push_back(faces[i]);
   return parts;
 }
 

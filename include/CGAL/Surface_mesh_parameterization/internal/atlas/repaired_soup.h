@@ -130,6 +130,7 @@ Atlas_triangles repaired_triangles(const Repaired_soup<Kernel>& r)
     for(auto h : halfedges_around_face(halfedge(f, r.mesh), r.mesh))
       t.faces[std::size_t(f)][std::size_t(k++)] = int(target(h, r.mesh));
   }
+  t.face_polygon = r.face_polygon;
   return t;
 }
 

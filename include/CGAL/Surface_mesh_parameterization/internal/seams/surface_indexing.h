@@ -110,10 +110,28 @@ public:
       for(int v : m_surface.edge_vertices[e])
         put(seam_vertices, m_vertices.vertices()[static_cast<std::size_t>(v)], true);
       ++m_report.number_of_seam_edges;
-      m_report.seam_length += m_surface.edge_lengths[e];
+      const std::array<int, 2>& ev = m_surface.edge_vertices[e];
+      m_report.seam_length += (m_surface.points[static_cast<std::size_t>(ev[0])] -
+                               m_surface.points[static_cast<std::size_t>(ev[1])]).norm();
     }
     for(int c : cones)
       m_report.cones.push_back(m_vertex_position[static_cast<std::size_t>(c)]);
+  }
+
+  // Makes the cut avoid the edges `avoid` flags: each costs, in every length the cut graph
+  // compares, more than all the other edges together, so that a cut crosses one only where
+  // every other cut crosses more (the edges inside an input polygon, say). Border edges are
+  // never cut anyway.
+  template <class EdgeFlagMap>
+  void avoid_edges(EdgeFlagMap avoid)
+  {
+    double total = 0.;
+    for(double l : m_surface.edge_lengths)
+      total += l;
+    const double penalty = 2. * total + 1.;
+    for(std::size_t e = 0; e < m_edge_of.size(); ++e)
+      if(get(avoid, m_edge_of[e]) && !m_surface.border_edge[e])
+        m_surface.edge_lengths[e] += penalty;
   }
 
 private:
