@@ -178,12 +178,17 @@ void keep_majority_orientation(Working_soup<Point_3>& soup, Working_mesh<Point_3
 }
 
 // The visitor of triangulate_faces(): every triangle of a polygon gets the polygon's id.
+// CGAL's default visitor gives the members that CGAL 6 adds to the concept (the phases of its
+// hole filling).
 template <class Mesh>
-struct Polygon_id_visitor
+struct Polygon_id_visitor : Polygon_mesh_processing::Triangulate_faces::Default_visitor<Mesh>
 {
   typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
-  typename Mesh::template Property_map<face_descriptor, std::size_t> id;
+  typedef typename Mesh::template Property_map<face_descriptor, std::size_t> Id_map;
+  Id_map id;
   std::size_t current = 0;
+
+  explicit Polygon_id_visitor(Id_map map) : id(map) { }
 
   void before_subface_creations(face_descriptor f) { current = get(id, f); }
   void after_subface_created(face_descriptor f) { put(id, f, current); }
@@ -240,7 +245,7 @@ void triangulate(const Working_soup<Point_3>& soup, Working_mesh<Point_3>& w, So
     is_polygon[get(w.face_id, f)] = true;
     is_input[soup.id_input[get(w.face_id, f)]] = true;
   }
-  Polygon_id_visitor<Mesh> visitor{w.face_id};
+  Polygon_id_visitor<Mesh> visitor(w.face_id);
   if(!Polygon_mesh_processing::triangulate_faces(polygons, w.mesh, parameters::visitor(visitor)))
     triangulate_rest(w.mesh, visitor);
   report.triangulated_polygons = std::size_t(std::count(is_input.begin(), is_input.end(), true));
