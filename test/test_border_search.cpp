@@ -26,9 +26,11 @@
 #include <CGAL/Surface_mesh_parameterization/Measured_border.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/border_evaluator.h>
+#include <CGAL/Surface_mesh_parameterization/internal/borders/border_members.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/border_search.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/border_step.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/conformal_border.h>
+#include <CGAL/Surface_mesh_parameterization/internal/borders/polar_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
 
@@ -54,10 +56,6 @@ typedef SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> Disk;
 typedef SMP::internal::Border_evaluator<Disk>                   Evaluator;
 
 namespace {
-
-Mesh make(const mbp_test::Soup& soup) { return mbp_test::make_mesh<Mesh>(soup); }
-
-UV_map new_uv(Mesh& m, const std::string& name) { return mbp_test::new_uv_map(m, name); }
 
 // The trials of one member with one interior, as (blend, valid, objective).
 struct Trial
@@ -130,7 +128,7 @@ BOOST_AUTO_TEST_CASE(search_finds_the_smallest_valid_blend_by_bisection)
   // the measured border folds: the C-shape seen from a vertex of its top arm with exact
   // geodesic radii (the discrete conformal interior of that border folds)
   {
-    Mesh m = make(mbp_test::c_shape());
+    Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::c_shape());
     vertex_descriptor center = Mesh::null_vertex();
     for(vertex_descriptor v : vertices(m))
       if(CGAL::squared_distance(m.point(v), K::Point_3(1.5, 13. / 6., 0.)) < 1e-12)
@@ -151,7 +149,7 @@ BOOST_AUTO_TEST_CASE(search_finds_the_smallest_valid_blend_by_bisection)
   // the conformal border overlaps itself: the spiral ramp (flat to first order, 1.6 turns);
   // its member starts at its smallest simple blend
   {
-    Mesh m = make(mbp_test::spiral_ramp());
+    Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::spiral_ramp());
     Disk disk;
     BOOST_REQUIRE_EQUAL(disk.build_disk(m, SMP::main_border(m).first, get(CGAL::vertex_point, m)), SMP::OK);
     SMP::internal::Border_members members(disk);
@@ -168,15 +166,49 @@ BOOST_AUTO_TEST_CASE(search_finds_the_smallest_valid_blend_by_bisection)
   }
 }
 
+// ================================================================ the measured border's blend
+
+// The measured member's blend toward the circle (border_members.h) against its definition,
+// computed here: at blend t the polar angle of border vertex k is (1 - t) phi_k + t c_k and
+// its radius (1 - t) r_k / mean(r) + t, so t = 0 is the measured border (radii normalized)
+// and t = 1 the circle; the placement only scales uniformly and translates.
+BOOST_AUTO_TEST_CASE(measured_border_blend_toward_the_circle_against_its_definition)
+{
+  const std::vector<double> phi = {0., 0.3, 1.6, 2.0, 3.9, 4.4, 5.8};   // a star-shaped border
+  const std::vector<double> r = {1.0, 2.5, 0.7, 1.9, 1.2, 3.0, 0.9};
+  const std::size_t n = phi.size();
+  std::vector<double> circle(n);
+  for(std::size_t k = 0; k < n; ++k)
+    circle[k] = 2. * CGAL_PI * double(k) / double(n);
+  double mean = 0.;
+  for(double x : r)
+    mean += x / double(n);
+  for(double t : {0., 0.3, 0.7, 1.})
+  {
+    SMP::internal::Polar_border out;
+    BOOST_REQUIRE_EQUAL(SMP::internal::blended_border(phi, r, circle, t, out), SMP::OK);
+    BOOST_REQUIRE_EQUAL(out.uv.size(), n);
+    BOOST_TEST(out.scale > 0.);
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const double a = (1. - t) * phi[k] + t * circle[k];
+      const double rho = (1. - t) * r[k] / mean + t;
+      const Eigen::Vector2d expected = out.origin + out.scale * rho * Eigen::Vector2d(std::cos(-a), std::sin(-a));
+      BOOST_TEST((out.uv[k] - expected).norm() < 1e-12, "t = " << t << ", vertex " << k);
+      BOOST_TEST(std::abs(out.angles[k] - a) < 1e-12, "t = " << t << ", vertex " << k);
+    }
+  }
+}
+
 // ================================================================ the conformal border's blend
 
 BOOST_AUTO_TEST_CASE(conformal_border_blend_toward_the_circle_against_its_definition)
 {
   // the spiral ramp: its conformal border overlaps itself, so the border is blended
-  Mesh m = make(mbp_test::spiral_ramp());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::spiral_ramp());
   const halfedge_descriptor bhd = SMP::main_border(m).first;
   SMP::Conformal_border_parameterizer_3<Mesh> border;
-  UV_map uv = new_uv(m, "v:uv");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto index = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
   SMP::Parameterization_report r;

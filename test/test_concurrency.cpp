@@ -136,8 +136,6 @@ typedef SMP::internal::Disk<Mesh, Traits>                       Disk;
 
 namespace {
 
-UV_map new_uv(Mesh& m, const std::string& name) { return mbp_test::new_uv_map(m, name); }
-
 // largest |a - b| over the vertices
 double uv_difference(const Mesh& m, UV_map a, UV_map b)
 {
@@ -218,7 +216,7 @@ BOOST_AUTO_TEST_CASE(a_sequential_call_starts_no_thread)
   const auto compare = [&](auto sequential, auto parallel, const std::string& border) {
     BOOST_TEST_CONTEXT("border " << border)
     {
-      UV_map sequential_uv = new_uv(m, "v:sequential"), parallel_uv = new_uv(m, "v:parallel");
+      UV_map sequential_uv = mbp_test::new_uv_map(m, "v:sequential"), parallel_uv = mbp_test::new_uv_map(m, "v:parallel");
       SMP::Parameterization_report sequential_report, parallel_report;
       const Started s = threads_started_by([&] {
         BOOST_REQUIRE_EQUAL(SMP::parameterize(m, sequential, bhd, sequential_uv, &sequential_report), SMP::OK);
@@ -244,7 +242,7 @@ BOOST_AUTO_TEST_CASE(a_sequential_call_starts_no_thread)
   // the drop-in measured border parameterizer (for CGAL's DCP): sequential too; Parallel_tag
   // prepares the border distance in a second thread
   const auto drop_in = [&](auto border) {
-    UV_map border_uv = new_uv(m, "v:border");
+    UV_map border_uv = mbp_test::new_uv_map(m, "v:border");
     auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
     auto index = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
     const Started s = threads_started_by([&] {
@@ -265,7 +263,7 @@ BOOST_AUTO_TEST_CASE(a_sequential_call_starts_no_thread)
     // package does not change process-wide settings): the package's own threads are counted
     typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<>, SMP::Cholmod_supernodal_cholesky_traits>
       Cholmod;
-    UV_map uv = new_uv(m, "v:cholmod");
+    UV_map uv = mbp_test::new_uv_map(m, "v:cholmod");
     const Started s = threads_started_by([&] { BOOST_REQUIRE_EQUAL(SMP::parameterize(m, Cholmod(), bhd, uv), SMP::OK); });
     BOOST_TEST_MESSAGE("CHOLMOD, Sequential_tag: " << s.all - s.cpp << " threads not started by the package");
     BOOST_TEST(s.cpp == 0);

@@ -71,23 +71,11 @@ typedef SMP::Parameterization_report                            Report;
 
 namespace {
 
-Mesh make(const mbp_test::Soup& soup)
-{
-  Mesh m;
-  mbp_test::soup_to_mesh(soup, m);
-  return m;
-}
-
 Mesh read(mbp_test::Tier tier, const std::string& name)
 {
   Mesh m;
   mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), m);
   return m;
-}
-
-UV_map new_uv(Mesh& m, const std::string& name)
-{
-  return m.add_property_map<vertex_descriptor, K::Point_2>(name, K::Point_2(-7, -7)).first;
 }
 
 // max |a - b| / max |b - center of [0,1]^2|, over all vertices
@@ -116,8 +104,8 @@ MBP_TIERED_TEST_CASE(equals_cgal_dcp_with_the_measured_border_and_a_direct_solve
   std::vector<std::pair<std::string, Mesh> > meshes;
   if(tier == mbp_test::Tier::core)
   {
-    meshes.emplace_back("bumpy disk", make(mbp_test::bumpy_disk()));
-    meshes.emplace_back("L-shape", make(mbp_test::l_shape()));
+    meshes.emplace_back("bumpy disk", mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk()));
+    meshes.emplace_back("L-shape", mbp_test::make_mesh<Mesh>(mbp_test::l_shape()));
   }
   for(const std::string& name : real_meshes(tier))
     meshes.emplace_back(name, read(tier, name));
@@ -125,7 +113,7 @@ MBP_TIERED_TEST_CASE(equals_cgal_dcp_with_the_measured_border_and_a_direct_solve
   {
     Mesh& m = named.second;
     const auto bhd = mbp_test::longest_border(m);
-    UV_map ours = new_uv(m, "v:ours"), cgal = new_uv(m, "v:cgal");
+    UV_map ours = mbp_test::new_uv_map(m, "v:ours"), cgal = mbp_test::new_uv_map(m, "v:cgal");
     Conformal conformal;
     BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, bhd, ours), SMP::OK);
     SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Measured_border_parameterizer_3<Mesh>, LU> dcp;
@@ -138,8 +126,8 @@ MBP_TIERED_TEST_CASE(equals_cgal_dcp_with_the_measured_border_and_a_direct_solve
 
 BOOST_AUTO_TEST_CASE(two_factorizations_and_four_back_substitutions)
 {
-  Mesh m = make(mbp_test::bumpy_disk());
-  UV_map uv = new_uv(m, "v:uv");
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   Conformal conformal;
   Report r;
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, mbp_test::longest_border(m), uv, &r), SMP::OK);
@@ -159,7 +147,7 @@ BOOST_AUTO_TEST_CASE(two_factorizations_and_four_back_substitutions)
   // the center is the drop-in measured border parameterizer's
   Report border_report;
   {
-    UV_map b = new_uv(m, "v:border");
+    UV_map b = mbp_test::new_uv_map(m, "v:border");
     auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
     auto vimap = m.add_property_map<vertex_descriptor, int>("v:i", 0).first;
     SMP::Measured_border_parameterizer_3<Mesh> border;
@@ -188,7 +176,7 @@ BOOST_AUTO_TEST_CASE(grounded_spring_laplacian_gives_the_poisson_distance_map)
   // several sources, the ground vertex included.
   for(const mbp_test::Soup& soup : {mbp_test::bumpy_disk(), mbp_test::l_shape()})
   {
-    Mesh m = make(soup);
+    Mesh m = mbp_test::make_mesh<Mesh>(soup);
     SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> patch;
     BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
     BOOST_REQUIRE_EQUAL(patch.factorize_spring_laplacian(1.), SMP::OK);
@@ -218,7 +206,7 @@ MBP_TIERED_TEST_CASE(concurrency_does_not_change_the_result)
   for(const std::string& name : real_meshes(tier))
   {
     Mesh m = read(tier, name);
-    UV_map a = new_uv(m, "v:a"), b = new_uv(m, "v:b");
+    UV_map a = mbp_test::new_uv_map(m, "v:a"), b = mbp_test::new_uv_map(m, "v:b");
     Conformal_parallel concurrent;  // CGAL::Parallel_tag: the spring factorization in a second thread
     Conformal sequential;
     Report ra, rb;
@@ -233,7 +221,7 @@ MBP_TIERED_TEST_CASE(concurrency_does_not_change_the_result)
 MBP_TIERED_TEST_CASE(every_solver_gives_the_same_parameterization)
 {
   Mesh m = read(tier, real_meshes(tier)[0]);
-  UV_map ldlt = new_uv(m, "v:ldlt");
+  UV_map ldlt = mbp_test::new_uv_map(m, "v:ldlt");
   Conformal a;
   Report ra;
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, a, mbp_test::longest_border(m), ldlt, &ra), SMP::OK);
@@ -243,7 +231,7 @@ MBP_TIERED_TEST_CASE(every_solver_gives_the_same_parameterization)
                                                     SMP::Poisson_border_distance, decltype(solver)> Other;
     BOOST_TEST_CONTEXT(name)
     {
-      UV_map uv = new_uv(m, "v:" + name);
+      UV_map uv = mbp_test::new_uv_map(m, "v:" + name);
       Other other(typename Other::Border_policy(), solver);  // the traits object is passed in
       Report r;
       BOOST_REQUIRE_EQUAL(SMP::parameterize(m, other, mbp_test::longest_border(m), uv, &r), SMP::OK);
@@ -307,7 +295,7 @@ MBP_TIERED_TEST_CASE(result_is_valid_and_better_than_the_circle_on_open_patches)
   for(const std::string& name : real_meshes(tier))
   {
     Mesh m = read(tier, name);
-    UV_map uv = new_uv(m, "v:uv"), circle = new_uv(m, "v:circle");
+    UV_map uv = mbp_test::new_uv_map(m, "v:uv"), circle = mbp_test::new_uv_map(m, "v:circle");
     Conformal conformal;
     BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, mbp_test::longest_border(m), uv), SMP::OK);
     SMP::Discrete_conformal_map_parameterizer_3<Mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh>, LU> dcp;
@@ -332,8 +320,8 @@ MBP_TIERED_TEST_CASE(result_is_valid_and_better_than_the_circle_on_open_patches)
 BOOST_AUTO_TEST_CASE(polyhedron_and_seam_mesh)
 {
   const mbp_test::Soup soup = mbp_test::bumpy_disk();
-  Mesh sm = make(soup);
-  UV_map uv = new_uv(sm, "v:uv");
+  Mesh sm = mbp_test::make_mesh<Mesh>(soup);
+  UV_map uv = mbp_test::new_uv_map(sm, "v:uv");
   Conformal conformal;
   BOOST_REQUIRE_EQUAL(SMP::parameterize(sm, conformal, mbp_test::longest_border(sm), uv), SMP::OK);
   std::map<std::array<double, 3>, K::Point_2> by_point;
@@ -360,7 +348,7 @@ BOOST_AUTO_TEST_CASE(polyhedron_and_seam_mesh)
     typedef Mesh::Property_map<boost::graph_traits<Mesh>::edge_descriptor, bool> Seam_edges;
     typedef Mesh::Property_map<vertex_descriptor, bool> Seam_vertices;
     typedef CGAL::Seam_mesh<Mesh, Seam_edges, Seam_vertices> Seam;
-    Mesh base = make(soup);
+    Mesh base = mbp_test::make_mesh<Mesh>(soup);
     Seam_edges se = base.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>("e:seam", false).first;
     Seam_vertices sv = base.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
     Seam seam(base, se, sv);
@@ -381,7 +369,7 @@ BOOST_AUTO_TEST_CASE(polyhedron_and_seam_mesh)
 BOOST_AUTO_TEST_CASE(bad_input_writes_nothing)
 {
   auto expect = [](Mesh& m, boost::graph_traits<Mesh>::halfedge_descriptor bhd, SMP::Error_code code) {
-    UV_map uv = new_uv(m, "v:uv");
+    UV_map uv = mbp_test::new_uv_map(m, "v:uv");
     auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
     auto vimap = m.add_property_map<vertex_descriptor, int>("v:i", 0).first;
     Conformal conformal;
@@ -401,18 +389,18 @@ BOOST_AUTO_TEST_CASE(bad_input_writes_nothing)
   {
     mbp_test::Soup soup = mbp_test::bumpy_disk();
     soup.points[5][2] = std::numeric_limits<double>::quiet_NaN();
-    Mesh m = make(soup);
+    Mesh m = mbp_test::make_mesh<Mesh>(soup);
     expect(m, mbp_test::longest_border(m), SMP::ERROR_NON_FINITE_COORDINATES);
   }
   {
-    Mesh torus = make(mbp_test::punctured_torus());
+    Mesh torus = mbp_test::make_mesh<Mesh>(mbp_test::punctured_torus());
     expect(torus, mbp_test::longest_border(torus), SMP::ERROR_NO_TOPOLOGICAL_DISC);
   }
   {
     // a user center on the border
-    Mesh m = make(mbp_test::bumpy_disk());
+    Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
     const auto bhd = mbp_test::longest_border(m);
-    UV_map uv = new_uv(m, "v:uv");
+    UV_map uv = mbp_test::new_uv_map(m, "v:uv");
     typedef SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Fixed_center<Mesh> > Fixed;
     Fixed fixed{Fixed::Border_policy(SMP::Fixed_center<Mesh>(source(bhd, m)))};
     BOOST_TEST(SMP::parameterize(m, fixed, bhd, uv) == SMP::ERROR_WRONG_PARAMETER);
@@ -430,7 +418,7 @@ namespace {
 template <class Parameterizer>
 double unrepaired_angle_distortion(Mesh& m, const Parameterizer& p, const std::string& name)
 {
-  UV_map uv = new_uv(m, name);
+  UV_map uv = mbp_test::new_uv_map(m, name);
   const Parameterizer unrepaired(p.border_policy(), p.solver_traits(), SMP::NO_REPAIR);
   const SMP::Error_code status = SMP::parameterize(m, unrepaired, mbp_test::longest_border(m), uv);
   BOOST_TEST((status == SMP::OK || status == SMP::ERROR_NO_1_TO_1_MAPPING), name << ": " << status);
@@ -454,7 +442,7 @@ MBP_TIERED_TEST_CASE(automatic_border_is_never_worse_than_its_members)
     BOOST_TEST_CONTEXT(name)
     {
       Mesh m = read(tier, name);
-      UV_map uv = new_uv(m, "v:auto"), circle_uv = new_uv(m, "v:circle");
+      UV_map uv = mbp_test::new_uv_map(m, "v:auto"), circle_uv = mbp_test::new_uv_map(m, "v:circle");
       Automatic automatic;
       Report report;
       BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv, &report), SMP::OK);
@@ -469,7 +457,7 @@ MBP_TIERED_TEST_CASE(automatic_border_is_never_worse_than_its_members)
       BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, mbp_test::longest_border(m), circle_uv), SMP::OK);
       const double circle = SMP::measure_quality(m, faces(m), circle_uv).angle_distortion;
       const double poisson = unrepaired_angle_distortion(m, Conformal(), "v:poisson");
-      UV_map conformal_uv = new_uv(m, "v:conformal");
+      UV_map conformal_uv = mbp_test::new_uv_map(m, "v:conformal");
       typedef mbp_test::Reporting_border<SMP::Conformal_border_parameterizer_3<Mesh> > Reporting_conformal_border;
       Report conformal_border;  // the report of the border step inside CGAL's DCP
       SMP::Discrete_conformal_map_parameterizer_3<Mesh, Reporting_conformal_border, LU> conformal_dcp(
@@ -533,8 +521,8 @@ MBP_TIERED_TEST_CASE(automatic_border_finds_the_flat_shape)
   // exact shape (the cotangent Laplacian reproduces linear functions)
   if(tier == mbp_test::Tier::core)
   {
-    Mesh m = make(mbp_test::polar_disk(8, 32));
-    UV_map uv = new_uv(m, "v:uv");
+    Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(8, 32));
+    UV_map uv = mbp_test::new_uv_map(m, "v:uv");
     Automatic automatic;
     BOOST_REQUIRE_EQUAL(SMP::parameterize(m, automatic, mbp_test::longest_border(m), uv), SMP::OK);
     const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
@@ -545,14 +533,14 @@ MBP_TIERED_TEST_CASE(automatic_border_finds_the_flat_shape)
   // exact geodesic distances the measured border, a member, is the exact shape
   std::vector<std::pair<std::string, Mesh> > meshes;
   if(tier == mbp_test::Tier::core)
-    meshes.emplace_back("hex ellipse", make(mbp_test::hex_disk(10, 2., 1.)));
+    meshes.emplace_back("hex ellipse", mbp_test::make_mesh<Mesh>(mbp_test::hex_disk(10, 2., 1.)));
   else
     meshes.emplace_back("bump-domain.obj", read(tier, "bump-domain.obj"));
   for(auto& named : meshes)
     BOOST_TEST_CONTEXT(named.first)
     {
       Mesh& m = named.second;
-      UV_map uv = new_uv(m, "v:uv");
+      UV_map uv = mbp_test::new_uv_map(m, "v:uv");
       SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<SMP::Geodesic_center_locator<SMP::Exact_geodesics>,
                                                                  SMP::Geodesic_border_distance<SMP::Exact_geodesics> > >
         automatic;
@@ -572,7 +560,7 @@ MBP_TIERED_TEST_CASE(automatic_border_is_deterministic)
 {
   const std::string name = automatic_border_meshes(tier)[1];
   Mesh m = read(tier, name);
-  UV_map a = new_uv(m, "v:a"), b = new_uv(m, "v:b"), c = new_uv(m, "v:c");
+  UV_map a = mbp_test::new_uv_map(m, "v:a"), b = mbp_test::new_uv_map(m, "v:b"), c = mbp_test::new_uv_map(m, "v:c");
   Automatic first, second;
   Automatic_parallel parallel;  // the parallel variant must give the same
   Report first_report, second_report, parallel_report;

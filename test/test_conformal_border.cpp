@@ -67,18 +67,6 @@ typedef SMP::Parameterization_report                            Report;
 
 namespace {
 
-Mesh make(const mbp_test::Soup& soup)
-{
-  Mesh m;
-  mbp_test::soup_to_mesh(soup, m);
-  return m;
-}
-
-UV_map new_uv(Mesh& m, const std::string& name)
-{
-  return m.add_property_map<vertex_descriptor, K::Point_2>(name, K::Point_2(-7, -7)).first;
-}
-
 // The faces of a soup made counterclockwise in the xy-plane (for planar soups).
 void orient_ccw(mbp_test::Soup& s)
 {
@@ -299,15 +287,15 @@ BOOST_AUTO_TEST_CASE(planar_non_star_shaped_disks_are_reproduced_exactly)
   {
     mbp_test::Soup soup = named.second;
     orient_ccw(soup);
-    Mesh m = make(soup);
-    UV_map conformal = new_uv(m, "v:conformal"), circle = new_uv(m, "v:circle"), measured = new_uv(m, "v:measured");
+    Mesh m = mbp_test::make_mesh<Mesh>(soup);
+    UV_map conformal = mbp_test::new_uv_map(m, "v:conformal"), circle = mbp_test::new_uv_map(m, "v:circle"), measured = mbp_test::new_uv_map(m, "v:measured");
     BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, conformal), SMP::OK);
     const double e = similarity_error(m, conformal, xy(soup));
     BOOST_TEST_MESSAGE(named.first << ": conformal border, distance to the input after alignment " << e);
     BOOST_TEST_CONTEXT(named.first) { BOOST_TEST(e <= 1e-8); }
     // the drop-in border alone: the border polygon is the input's, and it is not convex
     Border border;
-    UV_map b = new_uv(m, "v:border");
+    UV_map b = mbp_test::new_uv_map(m, "v:border");
     auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
     auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
     Report r;
@@ -325,12 +313,12 @@ BOOST_AUTO_TEST_CASE(planar_non_star_shaped_disks_are_reproduced_exactly)
 BOOST_AUTO_TEST_CASE(a_developable_patch_is_unrolled_exactly)
 {
   std::vector<std::array<double, 2> > planar;
-  Mesh m = make(rolled_c_shape(planar));
+  Mesh m = mbp_test::make_mesh<Mesh>(rolled_c_shape(planar));
   double height = 0.;  // the patch is really bent
   for(vertex_descriptor v : vertices(m))
     height = (std::max)(height, m.point(v).z());
   BOOST_TEST(height > 0.5);
-  UV_map uv = new_uv(m, "v:uv"), circle = new_uv(m, "v:circle");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv"), circle = mbp_test::new_uv_map(m, "v:circle");
   BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, uv), SMP::OK);
   const double e = similarity_error(m, uv, planar);
   BOOST_TEST_MESSAGE("rolled C-shape: distance to the unrolled shape " << e);
@@ -342,10 +330,10 @@ BOOST_AUTO_TEST_CASE(a_developable_patch_is_unrolled_exactly)
 
 BOOST_AUTO_TEST_CASE(turning_angles_closing_and_lengths_against_dense_computations)
 {
-  Mesh m = make(mbp_test::bumpy_disk(6, 20));
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk(6, 20));
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
   Border border;
-  UV_map uv = new_uv(m, "v:uv");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
   Report r;
@@ -414,14 +402,14 @@ BOOST_AUTO_TEST_CASE(the_sign_of_the_correction)
 {
   // A curved, asymmetric disk: the opposite sign k + h gives turning angles that do not sum
   // to 2 pi and a layout (CGAL's DCP with that border) with far more angle distortion.
-  Mesh m = make(mbp_test::bumpy_disk(8, 24));
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk(8, 24));
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
-  UV_map ours = new_uv(m, "v:ours"), wrong = new_uv(m, "v:wrong");
+  UV_map ours = mbp_test::new_uv_map(m, "v:ours"), wrong = mbp_test::new_uv_map(m, "v:wrong");
   const SMP::Conformal_parameterizer_3<Mesh, SMP::Conformal_border> full;
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, full, bhd, ours), SMP::OK);
 
   Border border;
-  UV_map b = new_uv(m, "v:b");
+  UV_map b = mbp_test::new_uv_map(m, "v:b");
   auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
   Report r;
@@ -446,10 +434,10 @@ BOOST_AUTO_TEST_CASE(the_sign_of_the_correction)
 
 BOOST_AUTO_TEST_CASE(a_self_overlapping_border_is_blended_until_valid)
 {
-  Mesh m = make(spiral_ramp());
+  Mesh m = mbp_test::make_mesh<Mesh>(spiral_ramp());
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
   Border border;
-  UV_map b = new_uv(m, "v:b");
+  UV_map b = mbp_test::new_uv_map(m, "v:b");
   auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
   Report r;
@@ -463,7 +451,7 @@ BOOST_AUTO_TEST_CASE(a_self_overlapping_border_is_blended_until_valid)
   BOOST_TEST(!SMP::internal::is_simple_polygon(at_zero));
 
   // the complete parameterizer: the smallest blend whose layout is one-to-one
-  UV_map uv = new_uv(m, "v:uv");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   Report report;
   BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, uv, &report), SMP::OK);
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
@@ -471,7 +459,7 @@ BOOST_AUTO_TEST_CASE(a_self_overlapping_border_is_blended_until_valid)
   BOOST_TEST(report.blend >= r.conformal_blend);
   BOOST_TEST(report.blend < 1.);
   // the automatic border: valid, and never worse than that
-  UV_map automatic_uv = new_uv(m, "v:automatic");
+  UV_map automatic_uv = mbp_test::new_uv_map(m, "v:automatic");
   BOOST_REQUIRE_EQUAL(flatten<SMP::Automatic_border<> >(m, automatic_uv), SMP::OK);
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), automatic_uv));
   BOOST_TEST(angle_distortion(m, automatic_uv) <= angle_distortion(m, uv) * (1. + 1e-12));
@@ -485,9 +473,9 @@ BOOST_AUTO_TEST_CASE(drop_in_border_in_cgal_dcp_equals_the_complete_parameterize
                              return rolled_c_shape(p);
                            }())})
   {
-    Mesh m = make(named.second);
+    Mesh m = mbp_test::make_mesh<Mesh>(named.second);
     const halfedge_descriptor bhd = mbp_test::longest_border(m);
-    UV_map full_uv = new_uv(m, "v:full"), dcp_uv = new_uv(m, "v:dcp");
+    UV_map full_uv = mbp_test::new_uv_map(m, "v:full"), dcp_uv = mbp_test::new_uv_map(m, "v:dcp");
     BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, full_uv), SMP::OK);
     SMP::Discrete_conformal_map_parameterizer_3<Mesh, Border, LU> dcp;
     BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, dcp_uv), SMP::OK);
@@ -503,9 +491,9 @@ BOOST_AUTO_TEST_CASE(drop_in_border_in_every_fixed_border_parameterizer_and_mesh
 {
   // a curved disk whose conformal border is convex: every fixed border map is then valid
   const mbp_test::Soup soup = mbp_test::polar_disk(8, 24, 1., 1., [](double x, double y) { return 0.3 * (x * x + y * y); });
-  Mesh m = make(soup);
+  Mesh m = mbp_test::make_mesh<Mesh>(soup);
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
-  UV_map uv = new_uv(m, "v:uv");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   Report report;  // the report of the border step that CGAL's DCP runs on its copy
   SMP::Discrete_conformal_map_parameterizer_3<Mesh, Reporting_border> dcp(Reporting_border{&report});
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, bhd, uv), SMP::OK);
@@ -553,7 +541,7 @@ BOOST_AUTO_TEST_CASE(drop_in_border_in_every_fixed_border_parameterizer_and_mesh
       if(v >= 24 * rows)
         v -= 24 * rows;
   tube.points.resize(24 * rows);
-  Mesh base = make(tube);
+  Mesh base = mbp_test::make_mesh<Mesh>(tube);
   typedef Mesh::Property_map<boost::graph_traits<Mesh>::edge_descriptor, bool> Seam_edges;
   typedef Mesh::Property_map<vertex_descriptor, bool> Seam_vertices;
   typedef CGAL::Seam_mesh<Mesh, Seam_edges, Seam_vertices> Seam;
@@ -597,12 +585,12 @@ BOOST_AUTO_TEST_CASE(drop_in_border_in_every_fixed_border_parameterizer_and_mesh
 
 BOOST_AUTO_TEST_CASE(holes_are_filled_as_for_the_measured_border)
 {
-  Mesh m = make(mbp_test::disk_with_two_holes());
-  UV_map uv = new_uv(m, "v:uv");
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::disk_with_two_holes());
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, uv), SMP::OK);
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
   Border border;
-  UV_map b = new_uv(m, "v:b");
+  UV_map b = mbp_test::new_uv_map(m, "v:b");
   auto vpm = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vim = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
   Report r;
@@ -613,15 +601,15 @@ BOOST_AUTO_TEST_CASE(holes_are_filled_as_for_the_measured_border)
     sum += k;
   BOOST_TEST(std::abs(sum - 2. * CGAL_PI) <= 1e-10);
   // the conformal border beats the circle on this curved disk
-  UV_map circle = new_uv(m, "v:circle");
+  UV_map circle = mbp_test::new_uv_map(m, "v:circle");
   BOOST_REQUIRE_EQUAL(flatten<SMP::Circular_border>(m, circle), SMP::OK);
   BOOST_TEST(angle_distortion(m, uv) < 0.5 * angle_distortion(m, circle));
 }
 
 BOOST_AUTO_TEST_CASE(one_factorization_unless_poisson_distances_are_asked_for)
 {
-  Mesh m = make(mbp_test::bumpy_disk());
-  UV_map uv = new_uv(m, "v:uv");
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   auto no_center_one_factorization = [&](auto policy, const char* name) {
     BOOST_TEST_CONTEXT(name)
     {
@@ -657,8 +645,8 @@ BOOST_AUTO_TEST_CASE(one_factorization_unless_poisson_distances_are_asked_for)
 
 BOOST_AUTO_TEST_CASE(automatic_border_keeps_the_best_valid_candidate)
 {
-  Mesh m = make(mbp_test::bumpy_disk());
-  UV_map uv = new_uv(m, "v:uv");
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   Report r;
   BOOST_REQUIRE_EQUAL(flatten<SMP::Automatic_border<> >(m, uv, &r), SMP::OK);
   BOOST_REQUIRE(r.chosen_candidate >= 0);
@@ -700,7 +688,7 @@ BOOST_AUTO_TEST_CASE(real_disks_automatic_border, MBP_EXTENDED_TIER)
   {
     Mesh m;
     mbp_test::read_mesh(mbp_test::shared_mesh(name), m);
-    UV_map uv = new_uv(m, "v:uv"), circle = new_uv(m, "v:circle");
+    UV_map uv = mbp_test::new_uv_map(m, "v:uv"), circle = mbp_test::new_uv_map(m, "v:circle");
     BOOST_TEST_CONTEXT(name)
     {
       Report r;

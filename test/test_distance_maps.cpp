@@ -48,13 +48,6 @@ namespace {
 
 const int RINGS = 10, SPOKES = 32;
 
-Mesh make(const mbp_test::Soup& soup)
-{
-  Mesh m;
-  mbp_test::soup_to_mesh(soup, m);
-  return m;
-}
-
 Dmap new_map(Mesh& m, const std::string& name, double init = -1.)
 {
   return m.add_property_map<vertex_descriptor, double>(name, init).first;
@@ -76,7 +69,7 @@ vertex_descriptor vertex_at(const Mesh& m, double x, double y)
 
 BOOST_AUTO_TEST_CASE(bpdm_maximum_is_the_center_of_an_ellipse)
 {
-  Mesh m = make(mbp_test::hex_disk(RINGS, 2., 1.));  // x stretched: an ellipse
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::hex_disk(RINGS, 2., 1.));  // x stretched: an ellipse
   Dmap f = new_map(m, "v:f");
   BOOST_REQUIRE_EQUAL(SMP::boundary_poisson_distance_map(m, mbp_test::longest_border(m), f), SMP::OK);
 
@@ -105,7 +98,7 @@ BOOST_AUTO_TEST_CASE(bpdm_maximum_is_the_center_of_an_ellipse)
 
 BOOST_AUTO_TEST_CASE(bpdm_respects_the_symmetries_of_the_ellipse)
 {
-  Mesh m = make(mbp_test::hex_disk(RINGS, 2., 1.));
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::hex_disk(RINGS, 2., 1.));
   Dmap f = new_map(m, "v:f");
   BOOST_REQUIRE_EQUAL(SMP::boundary_poisson_distance_map(m, mbp_test::longest_border(m), f), SMP::OK);
   double fmax = 0.;
@@ -123,7 +116,7 @@ BOOST_AUTO_TEST_CASE(bpdm_is_zero_on_the_loop_and_solves_equation_1)
 {
   // Check the discrete equation itself: sum_j w_ij (f_i - f_j) = d_i g_i at interior vertices,
   // with cotangent weights recomputed here from the geometry.
-  Mesh m = make(mbp_test::bumpy_disk());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
   Dmap f = new_map(m, "v:f");
   BOOST_REQUIRE_EQUAL(SMP::boundary_poisson_distance_map(m, mbp_test::longest_border(m), f), SMP::OK);
 
@@ -169,7 +162,7 @@ BOOST_AUTO_TEST_CASE(bpdm_is_zero_on_the_loop_and_solves_equation_1)
 
 BOOST_AUTO_TEST_CASE(pdm_is_zero_at_the_source_positive_elsewhere_and_grows_with_distance)
 {
-  Mesh m = make(mbp_test::polar_disk(RINGS, SPOKES));  // the unit disk
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(RINGS, SPOKES));  // the unit disk
   const vertex_descriptor center(0);
   for(double r : {0., 1., 2.})
   {
@@ -207,7 +200,7 @@ BOOST_AUTO_TEST_CASE(pdm_several_sources_and_components)
     a.points.push_back({p[0] + 5., p[1], p[2]});
   for(auto t : b.faces)
     a.faces.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-  Mesh m = make(a);
+  Mesh m = mbp_test::make_mesh<Mesh>(a);
   Dmap f = new_map(m, "v:f", -1.);
   const std::vector<vertex_descriptor> sources = {vertex_descriptor(0), vertex_descriptor(5)};
   BOOST_REQUIRE_EQUAL(SMP::poisson_distance_map(m, sources, f), SMP::OK);
@@ -226,7 +219,7 @@ BOOST_AUTO_TEST_CASE(pdm_several_sources_and_components)
 
 BOOST_AUTO_TEST_CASE(maps_are_invariant_under_rigid_motion_and_scale_with_the_mesh)
 {
-  Mesh m = make(mbp_test::bumpy_disk());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
   Mesh moved = m;
   const double s = 3.7;
   const double c = std::cos(0.8), sn = std::sin(0.8);
@@ -253,7 +246,7 @@ BOOST_AUTO_TEST_CASE(maps_are_invariant_under_rigid_motion_and_scale_with_the_me
 BOOST_AUTO_TEST_CASE(solver_is_a_template_parameter)
 {
   typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > LU;
-  Mesh m = make(mbp_test::bumpy_disk());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
   Dmap a = new_map(m, "v:a"), b = new_map(m, "v:b");
   BOOST_REQUIRE_EQUAL(SMP::boundary_poisson_distance_map(m, mbp_test::longest_border(m), a), SMP::OK);
   BOOST_REQUIRE_EQUAL(SMP::boundary_poisson_distance_map(m, mbp_test::longest_border(m), b,
@@ -270,7 +263,7 @@ BOOST_AUTO_TEST_CASE(solver_is_a_template_parameter)
 BOOST_AUTO_TEST_CASE(custom_vertex_point_map)
 {
   // The maps read positions through the vertex_point_map named parameter.
-  Mesh m = make(mbp_test::bumpy_disk());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
   auto doubled = m.add_property_map<vertex_descriptor, K::Point_3>("v:doubled").first;
   for(vertex_descriptor v : vertices(m))
     doubled[v] = K::Point_3(2 * m.point(v).x(), 2 * m.point(v).y(), 2 * m.point(v).z());
@@ -286,7 +279,7 @@ BOOST_AUTO_TEST_CASE(custom_vertex_point_map)
 
 BOOST_AUTO_TEST_CASE(disk_shares_one_factorization_of_the_interior_laplacian)
 {
-  Mesh m = make(mbp_test::bumpy_disk());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
   Disk disk;
   BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
   BOOST_TEST(disk.border().size() == std::size_t(24));
@@ -319,7 +312,7 @@ BOOST_AUTO_TEST_CASE(disk_shares_one_factorization_of_the_interior_laplacian)
 
 BOOST_AUTO_TEST_CASE(fixed_center_returns_the_user_vertex_and_rejects_border_vertices)
 {
-  Mesh m = make(mbp_test::bumpy_disk());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
   Disk disk;
   BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
   std::size_t c = 0;
@@ -332,7 +325,7 @@ BOOST_AUTO_TEST_CASE(fixed_center_returns_the_user_vertex_and_rejects_border_ver
 
 BOOST_AUTO_TEST_CASE(tied_maxima_resolve_to_the_vertex_nearest_their_mean)
 {
-  Mesh m = make(mbp_test::polar_disk(RINGS, SPOKES, 2., 1.));
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(RINGS, SPOKES, 2., 1.));
   Disk disk;
   BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
   // two symmetric maxima on the long axis (as BGDM has on the paper's ellipse), equal up
@@ -353,7 +346,7 @@ BOOST_AUTO_TEST_CASE(tied_maxima_resolve_to_the_vertex_nearest_their_mean)
 
 BOOST_AUTO_TEST_CASE(quality_of_an_isometry_and_of_a_similarity_is_optimal)
 {
-  Mesh m = make(mbp_test::polar_disk(6, 16, 1.5, 1.));  // flat, z = 0
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(6, 16, 1.5, 1.));  // flat, z = 0
   auto uv = m.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
   for(vertex_descriptor v : vertices(m))  // rotated and scaled copy
     uv[v] = K::Point_2(0.3 * (0.6 * m.point(v).x() - 0.8 * m.point(v).y()) + 5.,
@@ -376,7 +369,7 @@ BOOST_AUTO_TEST_CASE(quality_of_an_affine_map_has_known_singular_values)
   // uv = diag(2, 0.5) x: s1 = 2, s2 = 0.5 on every face. QC = 4; UV->3D singular values are
   // 1/s2 = 2 and 1/s1 = 0.5, and the area is preserved, so L2 = sqrt((4 + 1/4) / 2),
   // Linf = 2, and there is no area distortion.
-  Mesh m = make(mbp_test::polar_disk(6, 16));
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(6, 16));
   auto uv = m.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
   for(vertex_descriptor v : vertices(m))
     uv[v] = K::Point_2(2. * m.point(v).x(), 0.5 * m.point(v).y());

@@ -61,8 +61,6 @@ typedef SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> Disk;
 
 namespace {
 
-Mesh make(const mbp_test::Soup& soup) { return mbp_test::make_mesh<Mesh>(soup); }
-
 double euclid(const Mesh& m, vertex_descriptor a, vertex_descriptor b)
 {
   return std::sqrt(CGAL::squared_distance(m.point(a), m.point(b)));
@@ -113,7 +111,7 @@ BOOST_AUTO_TEST_CASE(exact_geodesics_equal_the_euclidean_distance_on_flat_convex
 {
   for(auto& named : flat_convex_meshes())
   {
-    Mesh m = make(named.second);
+    Mesh m = mbp_test::make_mesh<Mesh>(named.second);
     for(const std::vector<vertex_descriptor>& sources :
         {std::vector<vertex_descriptor>{vertex_descriptor(0)},
          std::vector<vertex_descriptor>{vertex_descriptor(3), vertex_descriptor(Mesh::size_type(num_vertices(m) - 1))}})
@@ -140,7 +138,7 @@ BOOST_AUTO_TEST_CASE(approximate_geodesics_are_close_to_the_euclidean_distance)
     {"hex disk", mbp_test::hex_disk(24)}, {"polar disk", mbp_test::polar_disk(10, 32)}};
   for(auto& named : meshes)
   {
-    Mesh m = make(named.second);
+    Mesh m = mbp_test::make_mesh<Mesh>(named.second);
     const std::vector<vertex_descriptor> sources = {vertex_descriptor(0)};
     const double near = 0.3;
     const Errors fm = distance_errors<SMP::Fast_marching_geodesics>(m, sources, near);
@@ -166,7 +164,7 @@ BOOST_AUTO_TEST_CASE(approximate_geodesics_are_close_to_the_euclidean_distance)
 
 BOOST_AUTO_TEST_CASE(geodesic_distance_map_checks_its_input)
 {
-  Mesh m = make(mbp_test::bumpy_disk());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
   Dmap d = m.add_property_map<vertex_descriptor, double>("v:d", -1.).first;
   BOOST_TEST(SMP::geodesic_distance_map<SMP::Exact_geodesics>(m, std::vector<vertex_descriptor>{}, d)
              == SMP::ERROR_WRONG_PARAMETER);
@@ -175,7 +173,7 @@ BOOST_AUTO_TEST_CASE(geodesic_distance_map_checks_its_input)
              == SMP::ERROR_EMPTY_MESH);
   mbp_test::Soup bad = mbp_test::bumpy_disk();
   bad.points[4][0] = std::numeric_limits<double>::infinity();
-  Mesh b = make(bad);
+  Mesh b = mbp_test::make_mesh<Mesh>(bad);
   Dmap db = b.add_property_map<vertex_descriptor, double>("v:d", -1.).first;
   BOOST_TEST(SMP::geodesic_distance_map<Heat>(b, std::vector<vertex_descriptor>{vertex_descriptor(0)}, db)
              == SMP::ERROR_NON_FINITE_COORDINATES);
@@ -189,7 +187,7 @@ BOOST_AUTO_TEST_CASE(geodesic_center_respects_the_symmetries)
 {
   // the ellipse has two BGDM maxima (paper Fig. 6): the tie-break gives the polar vertex
   {
-    Mesh m = make(mbp_test::hex_disk(12, 2., 1.));
+    Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::hex_disk(12, 2., 1.));
     Disk patch;
     BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
     std::size_t c = 0;
@@ -208,7 +206,7 @@ BOOST_AUTO_TEST_CASE(geodesic_center_respects_the_symmetries)
         p[1] *= 1.5;
       p[2] = 0.3 * p[0] * p[0];
     }
-    Mesh m = make(soup);
+    Mesh m = mbp_test::make_mesh<Mesh>(soup);
     Disk patch;
     BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
     std::size_t c = 0;
@@ -244,7 +242,7 @@ MBP_TIERED_TEST_CASE(exact_measured_border_reproduces_flat_star_shaped_meshes)
   // paper Table 1, Ellipse, MBPGP = 0: the polar map of exact distances is the flat shape
   std::vector<std::pair<std::string, Mesh> > meshes;
   if(tier == mbp_test::Tier::core)
-    meshes.emplace_back("hex ellipse", make(mbp_test::hex_disk(12, 2., 1.)));
+    meshes.emplace_back("hex ellipse", mbp_test::make_mesh<Mesh>(mbp_test::hex_disk(12, 2., 1.)));
   else
   {
     Mesh bump;
@@ -281,7 +279,7 @@ MBP_TIERED_TEST_CASE(flat_domain_not_star_shaped_is_not_reproduced)
   // arm's tip. The alligator (extended tier). Report what the exact geodesic border gives.
   Mesh m;
   if(tier == mbp_test::Tier::core)
-    m = make(mbp_test::c_shape());
+    m = mbp_test::make_mesh<Mesh>(mbp_test::c_shape());
   else
     mbp_test::read_mesh(mbp_test::shared_mesh("alligator.obj"), m);
   auto uv = m.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
@@ -302,7 +300,7 @@ MBP_TIERED_TEST_CASE(flat_domain_not_star_shaped_is_not_reproduced)
 
 BOOST_AUTO_TEST_CASE(geodesic_variant_costs_one_factorization_and_three_back_substitutions)
 {
-  Mesh m = make(mbp_test::bumpy_disk());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
   auto uv = m.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
   SMP::Measured_conformal_parameterizer_3<Mesh, SMP::Poisson_center_locator,
                                           SMP::Geodesic_border_distance<> > p;
@@ -400,7 +398,7 @@ BOOST_AUTO_TEST_CASE(every_center_and_distance_combination_on_every_mesh_type)
   const mbp_test::Soup soup = mbp_test::polar_disk(6, 16, 1.2, 0.9,
                                                    [](double x, double y) { return 0.15 * x * x + 0.1 * x * y; });
   {
-    Mesh m = make(soup);
+    Mesh m = mbp_test::make_mesh<Mesh>(soup);
     run_all(m, "Surface_mesh");
   }
   {
@@ -409,7 +407,7 @@ BOOST_AUTO_TEST_CASE(every_center_and_distance_combination_on_every_mesh_type)
     run_all(m, "Polyhedron_3");
   }
   {
-    Mesh base = make(soup);
+    Mesh base = mbp_test::make_mesh<Mesh>(soup);
     SM_seam_edges se = base.add_property_map<boost::graph_traits<Mesh>::edge_descriptor, bool>("e:seam", false).first;
     SM_seam_vertices sv = base.add_property_map<vertex_descriptor, bool>("v:seam", false).first;
     Seam_sm seam(base, se, sv);

@@ -205,13 +205,6 @@ mbp_test::Soup flower()
 }
 
 template <class Mesh>
-Mesh make(const mbp_test::Soup& soup)
-{
-  Mesh m;
-  mbp_test::soup_to_mesh(soup, m);
-  return m;
-}
-
 } // namespace
 
 // ------------------------------------------------------------------ the polar border map

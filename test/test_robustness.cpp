@@ -67,20 +67,6 @@ using mbp_test::Transform;
 
 namespace {
 
-Mesh make(const mbp_test::Soup& soup, const Transform& transform = nullptr)
-{
-  return mbp_test::make_mesh<Mesh>(soup, transform);
-}
-
-UV_map new_uv(Mesh& m, const std::string& name) { return mbp_test::new_uv_map(m, name); }
-
-Distance_map new_distances(Mesh& m, const std::string& name)
-{
-  return m.add_property_map<vertex_descriptor, double>(name, -1.).first;
-}
-
-std::vector<std::size_t> loop_of(const Mesh& m, halfedge_descriptor h) { return mbp_test::sorted_loop(m, h); }
-
 // largest |a - b| over the vertices, two meshes with the same vertex indices
 double uv_difference(const Mesh& ma, UV_map a, const Mesh& mb, UV_map b)
 {
@@ -105,7 +91,7 @@ BOOST_AUTO_TEST_CASE(fixed_center_that_is_not_a_vertex_of_the_mesh_is_a_wrong_pa
     two.points.push_back({{p[0] + 5., p[1], p[2]}});
   for(const auto& f : soup.faces)
     two.faces.push_back({f[0] + n, f[1] + n, f[2] + n});
-  Mesh m = make(two);
+  Mesh m = mbp_test::make_mesh<Mesh>(two);
   const halfedge_descriptor bhd = SMP::main_border(m).first;
   BOOST_REQUIRE(bhd != Mesh::null_halfedge());
   const bool first_component = std::size_t(source(bhd, m)) < n;
@@ -123,7 +109,7 @@ BOOST_AUTO_TEST_CASE(fixed_center_that_is_not_a_vertex_of_the_mesh_is_a_wrong_pa
     for(vertex_descriptor v : bad)
       BOOST_TEST_CONTEXT("center index " << std::size_t(v))
       {
-        UV_map uv = new_uv(*mesh, "v:uv");
+        UV_map uv = mbp_test::new_uv_map(*mesh, "v:uv");
         auto done = mesh->add_property_map<vertex_descriptor, bool>("v:done", false).first;
         auto index = mesh->add_property_map<vertex_descriptor, int>("v:index", 0).first;
         Fixed_border border{Fixed(SMP::Fixed_center<Mesh>(v))};
@@ -140,13 +126,13 @@ BOOST_AUTO_TEST_CASE(fixed_center_that_is_not_a_vertex_of_the_mesh_is_a_wrong_pa
         mesh->remove_property_map(index);
       }
   {
-    UV_map uv = new_uv(with_removed, "v:uv");
+    UV_map uv = mbp_test::new_uv_map(with_removed, "v:uv");
     Fixed_full full{Fixed(SMP::Fixed_center<Mesh>(removed))};
     BOOST_TEST(SMP::parameterize(with_removed, full, bhd, uv) == SMP::ERROR_WRONG_PARAMETER);
   }
   // the same locator with an interior vertex of the component works
   const vertex_descriptor good(Mesh::size_type(first_component ? 0 : n));
-  UV_map uv = new_uv(m, "v:good");
+  UV_map uv = mbp_test::new_uv_map(m, "v:good");
   Fixed_full full{Fixed(SMP::Fixed_center<Mesh>(good))};
   SMP::Parameterization_report report;
   BOOST_TEST(SMP::parameterize(m, full, bhd, uv, &report) == SMP::OK);
@@ -254,20 +240,20 @@ BOOST_AUTO_TEST_CASE(main_border_ties_follow_the_documented_rule_under_every_sim
     for(const auto& [name, transform] : transforms)
       BOOST_TEST_CONTEXT("tube of " << n << ", " << name)
       {
-        const Mesh m = make(tube(n), transform);
+        const Mesh m = mbp_test::make_mesh<Mesh>(tube(n), transform);
         const auto [bhd, length] = SMP::main_border(m);
         BOOST_REQUIRE(bhd != Mesh::null_halfedge());
         BOOST_TEST(is_border(bhd, m));
         BOOST_TEST(std::size_t(source(bhd, m)) == 0u);
-        BOOST_TEST(loop_of(m, bhd).front() == 0u);
+        BOOST_TEST(mbp_test::sorted_loop(m, bhd).front() == 0u);
         BOOST_TEST(std::abs(length - CGAL::Polygon_mesh_processing::face_border_length(bhd, m)) <= 1e-12 * length);
-        plain_rule_choices.insert(loop_of(m, CGAL::Polygon_mesh_processing::longest_border(m).first).front());
+        plain_rule_choices.insert(mbp_test::sorted_loop(m, CGAL::Polygon_mesh_processing::longest_border(m).first).front());
       }
     BOOST_TEST_MESSAGE("tube of " << n << ": the longest loop alone picks " << plain_rule_choices.size()
                        << " different loops over the transformations");
     // the parameterization follows: the same UVs for the tube scaled by 1e-6
-    Mesh a = make(tube(n)), b = make(tube(n), scaling(1e-6));
-    UV_map ua = new_uv(a, "v:uv"), ub = new_uv(b, "v:uv");
+    Mesh a = mbp_test::make_mesh<Mesh>(tube(n)), b = mbp_test::make_mesh<Mesh>(tube(n), scaling(1e-6));
+    UV_map ua = mbp_test::new_uv_map(a, "v:uv"), ub = mbp_test::new_uv_map(b, "v:uv");
     const Full p;
     BOOST_REQUIRE_EQUAL(SMP::parameterize(a, p, SMP::main_border(a).first, ua), SMP::OK);
     BOOST_REQUIRE_EQUAL(SMP::parameterize(b, p, SMP::main_border(b).first, ub), SMP::OK);
@@ -280,9 +266,9 @@ BOOST_AUTO_TEST_CASE(main_border_ties_follow_the_documented_rule_under_every_sim
   for(const auto& [name, transform] : transforms)
     BOOST_TEST_CONTEXT("square tube, " << name)
     {
-      const Mesh m = make(squares, transform);
+      const Mesh m = mbp_test::make_mesh<Mesh>(squares, transform);
       const halfedge_descriptor bhd = SMP::main_border(m).first;
-      BOOST_TEST(loop_of(m, bhd).size() == 8u);
+      BOOST_TEST(mbp_test::sorted_loop(m, bhd).size() == 8u);
       BOOST_TEST(std::size_t(source(bhd, m)) == 4u);  // the first vertex of the top loop
     }
 
@@ -292,9 +278,9 @@ BOOST_AUTO_TEST_CASE(main_border_ties_follow_the_documented_rule_under_every_sim
   for(const auto& [name, transform] : transforms)
     BOOST_TEST_CONTEXT("frustum, " << name)
     {
-      const Mesh m = make(frustum, transform);
+      const Mesh m = mbp_test::make_mesh<Mesh>(frustum, transform);
       const auto [bhd, length] = SMP::main_border(m);
-      BOOST_TEST(loop_of(m, bhd).size() == 4u);
+      BOOST_TEST(mbp_test::sorted_loop(m, bhd).size() == 4u);
       BOOST_TEST(std::abs(length - CGAL::Polygon_mesh_processing::face_border_length(bhd, m)) <= 1e-12 * length);
     }
 
@@ -304,7 +290,7 @@ BOOST_AUTO_TEST_CASE(main_border_ties_follow_the_documented_rule_under_every_sim
   closed.faces.push_back({0, 3, 2});
   closed.faces.push_back({4, 5, 6});
   closed.faces.push_back({4, 6, 7});
-  const Mesh box = make(closed);
+  const Mesh box = mbp_test::make_mesh<Mesh>(closed);
   BOOST_TEST(SMP::main_border(box).first == Mesh::null_halfedge());
 }
 
@@ -431,10 +417,10 @@ bool has_pinched_vertex(const Mesh& m)
 // and writes nothing.
 void check_rejected(Mesh& m, halfedge_descriptor bhd)
 {
-  UV_map uv = new_uv(m, "v:uv");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto index = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
-  Distance_map f = new_distances(m, "v:f");
+  Distance_map f = mbp_test::new_distance_map(m, "v:f");
   // the complete parameterizer with each border policy
   auto rejects = [&](const auto& p, const char* border) {
     BOOST_TEST(p.parameterize(m, bhd, uv, index, done) == SMP::ERROR_NO_TOPOLOGICAL_DISC, "border " << border);
@@ -487,7 +473,7 @@ BOOST_AUTO_TEST_CASE(pinched_disks_are_not_topological_disks)
         CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(m);
         BOOST_TEST(!has_pinched_vertex(m));
         BOOST_REQUIRE_EQUAL(border_loops(m).size(), 1u);
-        UV_map uv = new_uv(m, "v:uv");
+        UV_map uv = mbp_test::new_uv_map(m, "v:uv");
         const SMP::Conformal_parameterizer_3<Mesh, SMP::Conformal_border> p;
         BOOST_REQUIRE_EQUAL(SMP::parameterize(m, p, SMP::main_border(m).first, uv), SMP::OK);
         BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));

@@ -53,18 +53,6 @@ using mbp_test::Transform;
 
 namespace {
 
-Mesh make(const mbp_test::Soup& soup, const Transform& transform = nullptr)
-{
-  return mbp_test::make_mesh<Mesh>(soup, transform);
-}
-
-UV_map new_uv(Mesh& m, const std::string& name) { return mbp_test::new_uv_map(m, name); }
-
-Distance_map new_distances(Mesh& m, const std::string& name)
-{
-  return m.add_property_map<vertex_descriptor, double>(name, -1.).first;
-}
-
 struct Reference
 {
   std::map<std::string, std::vector<K::Point_2> > uv;  // per border policy, by vertex index
@@ -104,7 +92,7 @@ void check_same_quality(const SMP::Parameterization_quality& a, const SMP::Param
 template <class BorderPolicy>
 SMP::Parameterization_report measure_policy(Mesh& m, halfedge_descriptor bhd, const std::string& name, Reference& r)
 {
-  UV_map uv = new_uv(m, "v:uv");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   const SMP::Conformal_parameterizer_3<Mesh, BorderPolicy> p;
   SMP::Parameterization_report report;
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, p, bhd, uv, &report), SMP::OK);
@@ -144,7 +132,7 @@ Reference measure_everything(Mesh& m)
 
   // the drop-in conformal border parameterizer's report
   SMP::Conformal_border_parameterizer_3<Mesh> conformal;
-  UV_map uv = new_uv(m, "v:border");
+  UV_map uv = mbp_test::new_uv_map(m, "v:border");
   auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto index = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
   SMP::Parameterization_report report;
@@ -155,7 +143,7 @@ Reference measure_everything(Mesh& m)
   m.remove_property_map(done);
   m.remove_property_map(index);
 
-  Distance_map f = new_distances(m, "v:f");
+  Distance_map f = mbp_test::new_distance_map(m, "v:f");
   const std::vector<vertex_descriptor> source(1, vertex_descriptor(0));
   BOOST_REQUIRE_EQUAL(SMP::boundary_poisson_distance_map(m, bhd, f), SMP::OK);
   for(vertex_descriptor v : vertices(m))
@@ -202,12 +190,12 @@ BOOST_AUTO_TEST_CASE(results_do_not_depend_on_the_scale_of_the_mesh)
   for(const auto& named : {std::make_pair(std::string("planar grid"), mbp_test::square_grid(10)),
                            std::make_pair(std::string("curved disk"), mbp_test::bumpy_disk(6, 20))})
   {
-    Mesh unit = make(named.second);
+    Mesh unit = mbp_test::make_mesh<Mesh>(named.second);
     const Reference reference = measure_everything(unit);
     for(const auto& [factor, power_of_two] : factors)
       BOOST_TEST_CONTEXT(named.first << " scaled by " << factor)
       {
-        Mesh m = make(named.second, scaling(factor));
+        Mesh m = mbp_test::make_mesh<Mesh>(named.second, scaling(factor));
         const Reference scaled = measure_everything(m);
         for(const std::string& choice : choices)
           BOOST_TEST_CONTEXT("border " << choice)
@@ -244,8 +232,8 @@ BOOST_AUTO_TEST_CASE(results_do_not_depend_on_the_scale_of_the_mesh)
 
 BOOST_AUTO_TEST_CASE(quality_figures_do_not_depend_on_the_scale_of_the_mesh_or_of_the_uvs)
 {
-  Mesh unit = make(mbp_test::bumpy_disk(6, 20));
-  UV_map uv = new_uv(unit, "v:uv");
+  Mesh unit = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk(6, 20));
+  UV_map uv = mbp_test::new_uv_map(unit, "v:uv");
   const Full p;
   BOOST_REQUIRE_EQUAL(SMP::parameterize(unit, p, SMP::main_border(unit).first, uv), SMP::OK);
   const SMP::Parameterization_quality reference = SMP::measure_quality(unit, faces(unit), uv);
@@ -254,8 +242,8 @@ BOOST_AUTO_TEST_CASE(quality_figures_do_not_depend_on_the_scale_of_the_mesh_or_o
     for(double uv_factor : {1e-150, 1e-6, 1., 1e150})
       BOOST_TEST_CONTEXT("mesh scaled by " << mesh_factor << ", UVs by " << uv_factor)
       {
-        Mesh m = make(mbp_test::bumpy_disk(6, 20), scaling(mesh_factor));
-        UV_map scaled = new_uv(m, "v:uv");
+        Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk(6, 20), scaling(mesh_factor));
+        UV_map scaled = mbp_test::new_uv_map(m, "v:uv");
         for(vertex_descriptor v : vertices(m))
           scaled[v] = K::Point_2(uv[v].x() * uv_factor, uv[v].y() * uv_factor);
         check_same_quality(SMP::measure_quality(m, faces(m), scaled), reference, 1e-12);

@@ -184,13 +184,6 @@ mbp_test::Soup cylinder(int n = 24, int m = 10)
   return s;
 }
 
-Mesh make(const mbp_test::Soup& soup)
-{
-  Mesh mesh;
-  mbp_test::soup_to_mesh(soup, mesh);
-  return mesh;
-}
-
 // ---------------------------------------------------------------- seams and checks
 
 struct Seams
@@ -360,7 +353,7 @@ SMP::Parameterization_quality flatten_and_check(const Mesh& mesh, const Seams& s
 
 BOOST_AUTO_TEST_CASE(sphere_is_cut_into_a_disk_through_the_default_cones)
 {
-  Mesh mesh = make(icosphere(3));
+  Mesh mesh = mbp_test::make_mesh<Mesh>(icosphere(3));
   const Seams s = compute(mesh);
   check_disk(mesh, s);
   BOOST_CHECK_EQUAL(s.report.genus, 0);
@@ -390,14 +383,14 @@ BOOST_AUTO_TEST_CASE(sphere_is_cut_into_a_disk_through_the_default_cones)
 
 BOOST_AUTO_TEST_CASE(closed_genus_0_gets_at_least_two_cones)
 {
-  Mesh mesh = make(icosphere(2, lumpy));
+  Mesh mesh = mbp_test::make_mesh<Mesh>(icosphere(2, lumpy));
   SMP::Disk_seams_options options;
   options.number_of_cones = 0;
   const Seams s = compute(mesh, options);
   check_disk(mesh, s);
   BOOST_CHECK_EQUAL(s.report.cones.size(), 2u);
   options.number_of_cones = 7;
-  Mesh other = make(icosphere(2, lumpy));
+  Mesh other = mbp_test::make_mesh<Mesh>(icosphere(2, lumpy));
   const Seams t = compute(other, options);
   check_disk(other, t);
   BOOST_CHECK_EQUAL(t.report.cones.size(), 7u);
@@ -407,7 +400,7 @@ BOOST_AUTO_TEST_CASE(closed_genus_0_gets_at_least_two_cones)
 // scale factor is most extreme there: the first two cones are the two tips.
 BOOST_AUTO_TEST_CASE(first_cones_are_the_tips_of_an_ellipsoid)
 {
-  Mesh mesh = make(icosphere(3, [](std::array<double, 3> p) {
+  Mesh mesh = mbp_test::make_mesh<Mesh>(icosphere(3, [](std::array<double, 3> p) {
     return std::array<double, 3>{3. * p[0], p[1] + 0.01 * p[0], 0.9 * p[2]};
   }));
   SMP::Disk_seams_options options;
@@ -429,7 +422,7 @@ BOOST_AUTO_TEST_CASE(first_cones_are_the_tips_of_an_ellipsoid)
 
 BOOST_AUTO_TEST_CASE(torus_gets_two_loops)
 {
-  Mesh mesh = make(torus(24, 12));
+  Mesh mesh = mbp_test::make_mesh<Mesh>(torus(24, 12));
   const Seams s = compute(mesh);
   check_disk(mesh, s);
   BOOST_CHECK_EQUAL(s.report.genus, 1);
@@ -446,7 +439,7 @@ BOOST_AUTO_TEST_CASE(torus_gets_two_loops)
 
 BOOST_AUTO_TEST_CASE(double_torus_gets_four_loops)
 {
-  Mesh mesh = make(double_torus());
+  Mesh mesh = mbp_test::make_mesh<Mesh>(double_torus());
   BOOST_REQUIRE_EQUAL(long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh)), -2);
   const Seams s = compute(mesh);
   check_disk(mesh, s);
@@ -458,7 +451,7 @@ BOOST_AUTO_TEST_CASE(double_torus_gets_four_loops)
 
 BOOST_AUTO_TEST_CASE(cones_on_a_torus_join_the_loops)
 {
-  Mesh mesh = make(torus(24, 12, 2., 0.7, true));
+  Mesh mesh = mbp_test::make_mesh<Mesh>(torus(24, 12, 2., 0.7, true));
   SMP::Disk_seams_options options;
   options.number_of_cones = 3;
   const Seams s = compute(mesh, options);
@@ -472,7 +465,7 @@ BOOST_AUTO_TEST_CASE(cones_on_a_torus_join_the_loops)
 
 BOOST_AUTO_TEST_CASE(cylinder_gets_one_arc_between_its_borders)
 {
-  Mesh mesh = make(cylinder());
+  Mesh mesh = mbp_test::make_mesh<Mesh>(cylinder());
   const Seams s = compute(mesh);
   check_disk(mesh, s);
   BOOST_CHECK_EQUAL(s.report.number_of_border_loops, 2u);
@@ -488,7 +481,7 @@ BOOST_AUTO_TEST_CASE(cylinder_gets_one_arc_between_its_borders)
 
 BOOST_AUTO_TEST_CASE(holes_are_joined_to_the_outer_border_or_kept)
 {
-  Mesh mesh = make(mbp_test::disk_with_two_holes());
+  Mesh mesh = mbp_test::make_mesh<Mesh>(mbp_test::disk_with_two_holes());
   const Seams s = compute(mesh);
   check_disk(mesh, s);
   BOOST_CHECK_EQUAL(s.report.number_of_border_loops, 3u);
@@ -496,7 +489,7 @@ BOOST_AUTO_TEST_CASE(holes_are_joined_to_the_outer_border_or_kept)
   BOOST_CHECK_EQUAL(cut_graph_cycle_rank(mesh, s), 3);
   flatten_and_check(mesh, s);
 
-  Mesh kept = make(mbp_test::disk_with_two_holes());
+  Mesh kept = mbp_test::make_mesh<Mesh>(mbp_test::disk_with_two_holes());
   SMP::Disk_seams_options options;
   options.join_holes = false;
   const Seams k = compute(kept, options);
@@ -507,7 +500,7 @@ BOOST_AUTO_TEST_CASE(holes_are_joined_to_the_outer_border_or_kept)
 
 BOOST_AUTO_TEST_CASE(punctured_torus_gets_two_arcs)
 {
-  Mesh mesh = make(mbp_test::punctured_torus(16, 10));
+  Mesh mesh = mbp_test::make_mesh<Mesh>(mbp_test::punctured_torus(16, 10));
   const Seams s = compute(mesh);
   check_disk(mesh, s);
   BOOST_CHECK_EQUAL(s.report.genus, 1);
@@ -518,7 +511,7 @@ BOOST_AUTO_TEST_CASE(punctured_torus_gets_two_arcs)
 
 BOOST_AUTO_TEST_CASE(a_disk_needs_no_seam)
 {
-  Mesh mesh = make(mbp_test::bumpy_disk());
+  Mesh mesh = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
   const Seams s = compute(mesh);
   check_disk(mesh, s);
   BOOST_CHECK_EQUAL(s.report.number_of_seam_edges, 0u);
@@ -535,7 +528,7 @@ BOOST_AUTO_TEST_CASE(seams_are_deterministic_and_invariant_under_rigid_motions)
   const std::array<double, 3> axis = {2. / 3., 1. / 3., 2. / 3.};
   for(const mbp_test::Soup& shape : shapes)
   {
-    Mesh a = make(shape), b = make(shape);
+    Mesh a = mbp_test::make_mesh<Mesh>(shape), b = mbp_test::make_mesh<Mesh>(shape);
     mbp_test::Soup moved = shape;
     for(auto& p : moved.points)
     {
@@ -545,7 +538,7 @@ BOOST_AUTO_TEST_CASE(seams_are_deterministic_and_invariant_under_rigid_motions)
       for(int k = 0; k < 3; ++k)
         p[k] = c * p[k] + sn * x[k] + (1. - c) * d * axis[k] + 10. * (k + 1);
     }
-    Mesh m = make(moved);
+    Mesh m = mbp_test::make_mesh<Mesh>(moved);
     const Seams sa = compute(a), sb = compute(b), sm = compute(m);
     check_disk(a, sa);
     check_disk(m, sm);
@@ -561,7 +554,7 @@ BOOST_AUTO_TEST_CASE(seams_are_deterministic_and_invariant_under_rigid_motions)
 // own points are stretched, cut with the map of the original points, gets the original's seams.
 BOOST_AUTO_TEST_CASE(report_is_optional_and_points_come_from_the_named_parameter)
 {
-  Mesh mesh = make(icosphere(2, lumpy)), quiet = make(icosphere(2, lumpy)), stretched = make(icosphere(2, lumpy));
+  Mesh mesh = mbp_test::make_mesh<Mesh>(icosphere(2, lumpy)), quiet = mbp_test::make_mesh<Mesh>(icosphere(2, lumpy)), stretched = mbp_test::make_mesh<Mesh>(icosphere(2, lumpy));
   const Seams s = compute(mesh);
   check_disk(mesh, s);
   Seams q;
@@ -594,7 +587,7 @@ BOOST_AUTO_TEST_CASE(report_is_optional_and_points_come_from_the_named_parameter
 // reported length is the geometric one (check_disk()).
 BOOST_AUTO_TEST_CASE(seams_avoid_constrained_edges)
 {
-  Mesh mesh = make(torus(24, 12));
+  Mesh mesh = mbp_test::make_mesh<Mesh>(torus(24, 12));
   auto meridian = mesh.add_property_map<edge_descriptor, bool>("e:meridian", false).first;
   for(edge_descriptor e : edges(mesh))
   {
@@ -629,7 +622,7 @@ BOOST_AUTO_TEST_CASE(seams_avoid_constrained_edges)
 BOOST_AUTO_TEST_CASE(shortening_straightens_a_detour)
 {
   const int n = 24, m = 12;
-  Mesh mesh = make(torus(n, m));
+  Mesh mesh = mbp_test::make_mesh<Mesh>(torus(n, m));
   SMP::internal::Indexed_surface s;
   Report report;
   SMP::internal::Surface_indexer<Mesh> indexer(mesh, s, report);
@@ -689,7 +682,7 @@ BOOST_AUTO_TEST_CASE(bad_input_gets_a_named_error_and_no_output)
   two.points.insert(two.points.end(), second.points.begin(), second.points.end());
   for(auto f : second.faces)
     two.faces.push_back({f[0] + n, f[1] + n, f[2] + n});
-  Mesh mesh = make(two);
+  Mesh mesh = mbp_test::make_mesh<Mesh>(two);
   Seams s;
   s.edges = mesh.add_property_map<edge_descriptor, bool>("e:seam", true).first;
   s.vertices = mesh.add_property_map<vertex_descriptor, bool>("v:seam", true).first;

@@ -64,20 +64,6 @@ using mbp_test::Transform;
 
 namespace {
 
-Mesh make(const mbp_test::Soup& soup, const Transform& transform = nullptr)
-{
-  return mbp_test::make_mesh<Mesh>(soup, transform);
-}
-
-UV_map new_uv(Mesh& m, const std::string& name) { return mbp_test::new_uv_map(m, name); }
-
-Distance_map new_distances(Mesh& m, const std::string& name)
-{
-  return m.add_property_map<vertex_descriptor, double>(name, -1.).first;
-}
-
-std::vector<std::size_t> loop_of(const Mesh& m, halfedge_descriptor h) { return mbp_test::sorted_loop(m, h); }
-
 // An irregular curved disk: the polar grid of the unit disk with every vertex moved at
 // random (interior ones by up to a quarter of the ring spacing, border ones along and across
 // the border), lifted onto a bump. Edge lengths vary by a factor of about 4, so that the
@@ -169,7 +155,7 @@ BOOST_AUTO_TEST_CASE(mean_value_system_equals_cgal_mean_value_coordinates)
                            std::make_pair(std::string("disk with two holes"), mbp_test::disk_with_two_holes())})
     BOOST_TEST_CONTEXT(named.first)
     {
-      Mesh m = make(named.second);
+      Mesh m = mbp_test::make_mesh<Mesh>(named.second);
       const halfedge_descriptor bhd = SMP::main_border(m).first;
       Disk patch;
       BOOST_REQUIRE_EQUAL(patch.build_disk(m, bhd, get(CGAL::vertex_point, m)), SMP::OK);
@@ -182,7 +168,7 @@ BOOST_AUTO_TEST_CASE(mean_value_system_equals_cgal_mean_value_coordinates)
       std::vector<K::Point_3> fillings;
       for(const auto& loop : mbp_test::border_loops(m))
       {
-        if(loop_of(m, loop.first) == loop_of(m, bhd))
+        if(mbp_test::sorted_loop(m, loop.first) == mbp_test::sorted_loop(m, bhd))
           continue;
         std::vector<halfedge_descriptor> hole;
         for(halfedge_descriptor b : CGAL::halfedges_around_face(loop.first, m))
@@ -218,7 +204,7 @@ BOOST_AUTO_TEST_CASE(mean_value_system_equals_cgal_mean_value_coordinates)
       }
 
       // CGAL: arc-length circle, mean value coordinates, a direct solver
-      UV_map cgal_uv = new_uv(filled, "v:cgal");
+      UV_map cgal_uv = mbp_test::new_uv_map(filled, "v:cgal");
       SMP::Mean_value_coordinates_parameterizer_3<Mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh>, LU> mvc;
       BOOST_REQUIRE_EQUAL(CGAL::Surface_mesh_parameterization::parameterize(filled, mvc, bhd, cgal_uv), SMP::OK);
 
@@ -257,7 +243,7 @@ BOOST_AUTO_TEST_CASE(mean_value_system_equals_cgal_mean_value_coordinates)
 
 BOOST_AUTO_TEST_CASE(poisson_distance_maps_solve_equation_1_with_the_spring_exponent)
 {
-  Mesh m = make(irregular_disk());
+  Mesh m = mbp_test::make_mesh<Mesh>(irregular_disk());
   const halfedge_descriptor bhd = SMP::main_border(m).first;
   // the mesh is irregular: edge lengths vary by a factor of more than 3
   double shortest = std::numeric_limits<double>::infinity(), longest = 0.;
@@ -280,7 +266,7 @@ BOOST_AUTO_TEST_CASE(poisson_distance_maps_solve_equation_1_with_the_spring_expo
                                                            std::vector<vertex_descriptor>{center, other}})
       {
         const std::vector<double> oracle = dense_poisson_distances(m, sources, r);
-        Distance_map f = new_distances(m, "v:f");
+        Distance_map f = mbp_test::new_distance_map(m, "v:f");
         BOOST_REQUIRE_EQUAL(SMP::poisson_distance_map(m, sources, f, r), SMP::OK);
         double worst = 0., largest = 0.;
         for(vertex_descriptor v : vertices(m))
@@ -298,7 +284,7 @@ BOOST_AUTO_TEST_CASE(poisson_distance_maps_solve_equation_1_with_the_spring_expo
       typedef SMP::Measured_border<SMP::Fixed_center<Mesh>, SMP::Poisson_border_distance> Policy;
       SMP::Border_parameterizer_3<Mesh, Policy> border{Policy(SMP::Fixed_center<Mesh>(center),
                                                               SMP::Poisson_border_distance(r))};
-      UV_map uv = new_uv(m, "v:uv");
+      UV_map uv = mbp_test::new_uv_map(m, "v:uv");
       auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
       auto index = m.add_property_map<vertex_descriptor, int>("v:index", 0).first;
       SMP::Parameterization_report report;
@@ -338,7 +324,7 @@ BOOST_AUTO_TEST_CASE(mean_edge_length_g_counts_every_edge_once_on_border_vertice
                            std::make_pair(std::string("planar grid"), mbp_test::square_grid(6))})
     BOOST_TEST_CONTEXT(named.first)
     {
-      Mesh m = make(named.second, scaling(1e-3));
+      Mesh m = mbp_test::make_mesh<Mesh>(named.second, scaling(1e-3));
       Disk patch;
       BOOST_REQUIRE_EQUAL(patch.build_disk(m, SMP::main_border(m).first, get(CGAL::vertex_point, m)), SMP::OK);
       const std::vector<double>& g = patch.mean_spoke_lengths();

@@ -21,8 +21,10 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/soup_repair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
@@ -799,8 +801,12 @@ BOOST_AUTO_TEST_CASE(the_independent_manifold_check_sees_the_defects)
 BOOST_AUTO_TEST_CASE(triangle_mesh_given_directly)
 {
   const Mesh input = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(3, 8));
+  // the soup of the mesh as compute_atlas() makes it, with CGAL's function
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  CGAL::Polygon_mesh_processing::polygon_mesh_to_polygon_soup(input, points, polygons);
   Repaired r;
-  BOOST_REQUIRE_EQUAL(SMP::internal::repair_face_graph_for_atlas(input, r), SMP::OK);
+  BOOST_REQUIRE_EQUAL(SMP::internal::repair_soup_for_atlas(points, polygons, r), SMP::OK);
   check_mesh(r);
   check_report(r.report, [&] {
     SMP::Soup_repair_report want;
@@ -810,8 +816,11 @@ BOOST_AUTO_TEST_CASE(triangle_mesh_given_directly)
     want.components = 1;
     return want;
   }());
-  // corner i of the soup is the target of the i-th halfedge of face_graph_corners()
-  const auto corners = SMP::internal::face_graph_corners(input);
+  // corner i of the soup is the target of the i-th halfedge around the faces of the mesh
+  std::vector<boost::graph_traits<Mesh>::halfedge_descriptor> corners;
+  for(auto f : faces(input))
+    for(auto h : halfedges_around_face(halfedge(f, input), input))
+      corners.push_back(h);
   BOOST_REQUIRE_EQUAL(corners.size(), r.corners.size());
   for(std::size_t i = 0; i < corners.size(); ++i)
   {

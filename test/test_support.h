@@ -408,6 +408,14 @@ new_uv_map(Mesh& m, const std::string& name)
     name, Point_2(-7, -7)).first;
 }
 
+// A new vertex distance map of a Surface_mesh, every distance -1 (a value no distance map writes).
+template <class Mesh>
+typename Mesh::template Property_map<typename boost::graph_traits<Mesh>::vertex_descriptor, double>
+new_distance_map(Mesh& m, const std::string& name)
+{
+  return m.template add_property_map<typename boost::graph_traits<Mesh>::vertex_descriptor, double>(name, -1.).first;
+}
+
 // The vertices of the border loop of `bhd`, from source(bhd) on: vertex k is the source of
 // the k-th halfedge of the loop (the order of the reports' per-border-vertex fields).
 template <class Mesh>

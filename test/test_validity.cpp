@@ -49,10 +49,6 @@ typedef SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> Disk;
 
 namespace {
 
-Mesh make(const mbp_test::Soup& soup) { return mbp_test::make_mesh<Mesh>(soup); }
-
-UV_map new_uv(Mesh& m, const std::string& name) { return mbp_test::new_uv_map(m, name); }
-
 // The border loops of the mesh other than `bhd`'s, in UV: each must be a simple polygon.
 bool holes_are_simple_polygons(const Mesh& m, halfedge_descriptor bhd, UV_map uv, int& holes)
 {
@@ -104,8 +100,8 @@ BOOST_AUTO_TEST_CASE(global_overlap_test)
     strip.faces.push_back({a, b, c});
     strip.faces.push_back({a, c, d});
   }
-  Mesh m = make(strip);
-  UV_map uv = new_uv(m, "v:uv");
+  Mesh m = mbp_test::make_mesh<Mesh>(strip);
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   for(vertex_descriptor v : vertices(m))
     uv[v] = K::Point_2(m.point(v).x(), m.point(v).y());
   BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
@@ -131,9 +127,9 @@ BOOST_AUTO_TEST_CASE(global_overlap_test_agrees_with_cgals)
   // of LSCM_parameterizer_3), on the flat layout of a disk with more and more vertices moved
   // by pseudo-random offsets: both must give the same answer every time, and both answers
   // must occur.
-  Mesh m = make(mbp_test::polar_disk(6, 16));
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(6, 16));
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
-  UV_map uv = new_uv(m, "v:uv");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   SMP::LSCM_parameterizer_3<Mesh> cgal;
   mbp_test::Lcg lcg(12345u);
   auto random = [&lcg]() { return 2. * lcg() - 1.; };  // in [-1, 1), the same sequence everywhere
@@ -160,7 +156,7 @@ BOOST_AUTO_TEST_CASE(global_overlap_test_agrees_with_cgals)
 
 BOOST_AUTO_TEST_CASE(patch_test_accepts_valid_and_rejects_folded_layouts)
 {
-  Mesh m = make(mbp_test::disk_with_two_holes());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::disk_with_two_holes());
   Disk patch;
   BOOST_REQUIRE_EQUAL(patch.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
   BOOST_REQUIRE_EQUAL(patch.hole_loops().size(), 2u);
@@ -189,7 +185,7 @@ BOOST_AUTO_TEST_CASE(patch_test_accepts_valid_and_rejects_folded_layouts)
 
 BOOST_AUTO_TEST_CASE(holes_are_filled_virtually_and_stay_simple_polygons)
 {
-  Mesh m = make(mbp_test::disk_with_two_holes());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::disk_with_two_holes());
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
   Disk patch;
   BOOST_REQUIRE_EQUAL(patch.build_disk(m, bhd, get(CGAL::vertex_point, m)), SMP::OK);
@@ -206,7 +202,7 @@ BOOST_AUTO_TEST_CASE(holes_are_filled_virtually_and_stay_simple_polygons)
     single += (mask & 1) + ((mask >> 1) & 1) + ((mask >> 2) & 1);
   BOOST_TEST(single == patch.border().size());
 
-  UV_map uv = new_uv(m, "v:uv");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   Conformal conformal;
   SMP::Parameterization_report report;
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, bhd, uv, &report), SMP::OK);
@@ -232,7 +228,7 @@ MBP_TIERED_TEST_CASE(real_meshes_with_holes)
       Mesh m;
       mbp_test::read_mesh(mbp_test::tier_mesh(tier, name), m);
       const halfedge_descriptor bhd = mbp_test::longest_border(m);
-      UV_map uv = new_uv(m, "v:uv");
+      UV_map uv = mbp_test::new_uv_map(m, "v:uv");
       Conformal conformal;
       SMP::Parameterization_report r;
       BOOST_REQUIRE_EQUAL(SMP::parameterize(m, conformal, bhd, uv, &r), SMP::OK);
@@ -262,7 +258,7 @@ bool check_repair(Mesh& m, const BorderPolicy& border)
 {
   typedef SMP::Conformal_parameterizer_3<Mesh, BorderPolicy> Parameterizer;
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
-  UV_map uv = new_uv(m, "v:uv");
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
   auto done = m.add_property_map<vertex_descriptor, bool>("v:done", false).first;
   auto vimap = m.add_property_map<vertex_descriptor, int>("v:i", 0).first;
   const Parameterizer unrepaired(border, typename Parameterizer::Solver_traits(), SMP::NO_REPAIR);
@@ -308,7 +304,7 @@ BOOST_AUTO_TEST_CASE(generated_fold_is_repaired_or_rejected)
 {
   // The C-shaped flat domain seen from a vertex of its top arm: the exact geodesic radii of
   // the hidden parts make the discrete conformal interior fold.
-  Mesh m = make(mbp_test::c_shape());
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::c_shape());
   vertex_descriptor center;
   for(vertex_descriptor v : vertices(m))
     if(CGAL::squared_distance(m.point(v), K::Point_3(1.5, 13. / 6., 0.)) < 1e-12)

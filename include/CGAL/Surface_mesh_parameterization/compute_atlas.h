@@ -23,6 +23,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <Eigen/Core>

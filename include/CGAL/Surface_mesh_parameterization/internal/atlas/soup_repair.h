@@ -38,7 +38,6 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
-#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -441,44 +440,6 @@ Error_code repair_soup_for_atlas(const PointRange& points, const PolygonRange& p
   else
     out.report = result.report;
   return error;
-}
-
-// A face graph as a soup, so that a triangle mesh given directly takes the same way
-// (CGAL's polygon_mesh_to_polygon_soup()): the points in the order of vertices(mesh), one
-// polygon per face in the order of faces(mesh), its corners in the order of
-// halfedges_around_face(halfedge(f, mesh), mesh) (corner j is the target of the j-th halfedge).
-template <class FaceGraph, class Point_3>
-void face_graph_to_soup(const FaceGraph& mesh, std::vector<Point_3>& points,
-                        std::vector<std::vector<std::size_t> >& polygons)
-{
-  points.clear();
-  polygons.clear();
-  Polygon_mesh_processing::polygon_mesh_to_polygon_soup(mesh, points, polygons);
-}
-
-// The halfedges of `mesh` in the order of the corners of face_graph_to_soup(): the UV of input
-// corner i (Repaired_soup::corners[i]) is the UV of the corner of the face graph at
-// target(result[i]), in face(result[i]).
-template <class FaceGraph>
-std::vector<typename boost::graph_traits<FaceGraph>::halfedge_descriptor> face_graph_corners(const FaceGraph& mesh)
-{
-  std::vector<typename boost::graph_traits<FaceGraph>::halfedge_descriptor> corners;
-  for(auto f : faces(mesh))
-    for(auto h : halfedges_around_face(halfedge(f, mesh), mesh))
-      corners.push_back(h);
-  return corners;
-}
-
-// A face graph repaired like a soup (face_graph_to_soup()); its input polygon p is the p-th
-// face of faces(mesh).
-template <class Kernel, class FaceGraph>
-Error_code repair_face_graph_for_atlas(const FaceGraph& mesh, Repaired_soup<Kernel>& out)
-{
-  typedef typename boost::property_map<FaceGraph, vertex_point_t>::const_type Point_map;
-  std::vector<typename boost::property_traits<Point_map>::value_type> points;  // the mesh's own points
-  std::vector<std::vector<std::size_t> > polygons;
-  face_graph_to_soup(mesh, points, polygons);
-  return repair_soup_for_atlas(points, polygons, out);
 }
 
 } // namespace internal
