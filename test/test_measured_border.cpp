@@ -204,7 +204,6 @@ mbp_test::Soup flower()
   return s;
 }
 
-template <class Mesh>
 } // namespace
 
 // ------------------------------------------------------------------ the polar border map
@@ -213,7 +212,7 @@ BOOST_AUTO_TEST_CASE(border_is_the_polar_map_of_the_measured_distances)
 {
   for(const mbp_test::Soup& soup : {mbp_test::bumpy_disk(), flower(), mbp_test::l_shape(), mbp_test::hex_disk(8, 2., 1.)})
   {
-    SM m = make<SM>(soup);
+    SM m = mbp_test::make_mesh<SM>(soup);
     const auto bhd = mbp_test::longest_border(m);
     Maps<SM> maps(m);
     SMP::Measured_border_parameterizer_3<SM> border;
@@ -307,14 +306,14 @@ BOOST_AUTO_TEST_CASE(convexity_is_claimed_only_when_verified)
 {
   // the L-shape's measured border is not convex; the flat ellipse's is
   {
-    SM m = make<SM>(mbp_test::l_shape());
+    SM m = mbp_test::make_mesh<SM>(mbp_test::l_shape());
     Maps<SM> maps(m);
     SMP::Measured_border_parameterizer_3<SM> border;
     BOOST_REQUIRE_EQUAL(border.parameterize(m, mbp_test::longest_border(m), maps.uv, index_map(m), maps.parameterized), SMP::OK);
     BOOST_TEST(!border.is_border_convex());
   }
   {
-    SM m = make<SM>(mbp_test::hex_disk(8, 2., 1.));
+    SM m = mbp_test::make_mesh<SM>(mbp_test::hex_disk(8, 2., 1.));
     Maps<SM> maps(m);
     SMP::Measured_border_parameterizer_3<SM> border;
     BOOST_TEST(!border.is_border_convex());  // nothing verified yet
@@ -330,7 +329,7 @@ BOOST_AUTO_TEST_CASE(drop_in_for_every_fixed_border_parameterizer)
   typedef SMP::Measured_border_parameterizer_3<SM> Border;
   for(const mbp_test::Soup& soup : {mbp_test::bumpy_disk(), mbp_test::l_shape()})
   {
-    SM m = make<SM>(soup);
+    SM m = mbp_test::make_mesh<SM>(soup);
     const auto bhd = mbp_test::longest_border(m);
     Maps<SM> reference(m);
     Border direct;
@@ -361,7 +360,7 @@ BOOST_AUTO_TEST_CASE(report_of_the_call_inside_cgal_dcp_and_policies_plug_in)
 {
   typedef SMP::Measured_border_parameterizer_3<SM, SMP::Fixed_center<SM> > Measured;
   typedef mbp_test::Reporting_border<Measured> Border;
-  SM m = make<SM>(mbp_test::bumpy_disk());
+  SM m = mbp_test::make_mesh<SM>(mbp_test::bumpy_disk());
   const SM_vertex chosen(17);
   BOOST_REQUIRE(!is_border(chosen, m));
   SMP::Parameterization_report report;
@@ -385,21 +384,21 @@ BOOST_AUTO_TEST_CASE(report_of_the_call_inside_cgal_dcp_and_policies_plug_in)
 BOOST_AUTO_TEST_CASE(same_result_on_every_halfedge_graph)
 {
   const mbp_test::Soup soup = mbp_test::bumpy_disk();
-  const UV_by_point reference = measured_dcp(make<SM>(soup));
-  compare(reference, measured_dcp(make<SM_epick>(soup)), 1e-12);
-  compare(reference, measured_dcp(make<Poly>(soup)), 1e-12);
-  compare(reference, measured_dcp(make<Poly_epick>(soup)), 1e-12);
+  const UV_by_point reference = measured_dcp(mbp_test::make_mesh<SM>(soup));
+  compare(reference, measured_dcp(mbp_test::make_mesh<SM_epick>(soup)), 1e-12);
+  compare(reference, measured_dcp(mbp_test::make_mesh<Poly>(soup)), 1e-12);
+  compare(reference, measured_dcp(mbp_test::make_mesh<Poly_epick>(soup)), 1e-12);
 
   // Seam_mesh with no seam is the same disk; its vertex descriptors are halfedges
   {
-    SM sm = make<SM>(soup);
+    SM sm = mbp_test::make_mesh<SM>(soup);
     SM_seam_edges se = sm.add_property_map<SM_edge, bool>("e:seam", false).first;
     SM_seam_vertices sv = sm.add_property_map<SM_vertex, bool>("v:seam", false).first;
     Seam_sm seam(sm, se, sv);
     compare(reference, measured_dcp(seam), 1e-12);
   }
   {
-    Poly_epick pm = make<Poly_epick>(soup);
+    Poly_epick pm = mbp_test::make_mesh<Poly_epick>(soup);
     Poly_edge_flags ef(false);
     Poly_vertex_flags vf(false);
     Seam_poly seam(pm, boost::make_assoc_property_map(ef), boost::make_assoc_property_map(vf));
@@ -452,7 +451,7 @@ BOOST_AUTO_TEST_CASE(seam_mesh_with_a_cut)
     BOOST_TEST(split == cut);  // every slit vertex but the tip is duplicated
   };
   {
-    SM sm = make<SM>(soup);
+    SM sm = mbp_test::make_mesh<SM>(soup);
     SM_seam_edges se = sm.add_property_map<SM_edge, bool>("e:seam", false).first;
     SM_seam_vertices sv = sm.add_property_map<SM_vertex, bool>("v:seam", false).first;
     Seam_sm seam(sm, se, sv);
@@ -461,7 +460,7 @@ BOOST_AUTO_TEST_CASE(seam_mesh_with_a_cut)
     });
   }
   {
-    Poly_epick pm = make<Poly_epick>(soup);
+    Poly_epick pm = mbp_test::make_mesh<Poly_epick>(soup);
     Poly_edge_flags ef(false);
     Poly_vertex_flags vf(false);
     Seam_poly seam(pm, boost::make_assoc_property_map(ef), boost::make_assoc_property_map(vf));
@@ -475,7 +474,7 @@ BOOST_AUTO_TEST_CASE(slit_pointing_at_the_center_is_a_degenerate_border_map)
   // A radial slit: all its vertices are seen from the center in one direction, so the polar
   // map cannot be star-shaped. The call must fail rather than fold.
   const int rings = 8, spokes = 24;
-  SM sm = make<SM>(mbp_test::polar_disk(rings, spokes));
+  SM sm = mbp_test::make_mesh<SM>(mbp_test::polar_disk(rings, spokes));
   SM_seam_edges se = sm.add_property_map<SM_edge, bool>("e:seam", false).first;
   SM_seam_vertices sv = sm.add_property_map<SM_vertex, bool>("v:seam", false).first;
   Seam_sm seam(sm, se, sv);
@@ -503,9 +502,9 @@ BOOST_AUTO_TEST_CASE(result_is_invariant_under_rigid_motion_and_uniform_scaling)
     const std::array<double, 3> q = p;
     p = {s * (c * q[0] + sn * q[2]) - 3., s * q[1] + 100., s * (-sn * q[0] + c * q[2]) + 0.5};
   }
-  const UV_by_point a = measured_dcp(make<SM>(soup)), b = measured_dcp(make<SM>(moved));
+  const UV_by_point a = measured_dcp(mbp_test::make_mesh<SM>(soup)), b = measured_dcp(mbp_test::make_mesh<SM>(moved));
   // match vertices by index (positions moved): both maps are ordered by the same vertices
-  SM ma = make<SM>(soup), mb = make<SM>(moved);
+  SM ma = mbp_test::make_mesh<SM>(soup), mb = mbp_test::make_mesh<SM>(moved);
   double worst = 0.;
   for(auto v : vertices(ma))
   {
@@ -576,13 +575,13 @@ BOOST_AUTO_TEST_CASE(bad_input_non_triangle_faces)
   for(std::size_t i = 0; i < 3; ++i)
     for(std::size_t j = 0; j < 3; ++j)
       quads.faces.push_back({4 * i + j, 4 * (i + 1) + j, 4 * (i + 1) + j + 1, 4 * i + j + 1});
-  SM m = make<SM>(quads);
+  SM m = mbp_test::make_mesh<SM>(quads);
   expect_failure(m, mbp_test::longest_border(m), SMP::ERROR_NON_TRIANGULAR_MESH);
 }
 
 BOOST_AUTO_TEST_CASE(bad_input_null_or_non_border_halfedge)
 {
-  SM m = make<SM>(mbp_test::bumpy_disk());
+  SM m = mbp_test::make_mesh<SM>(mbp_test::bumpy_disk());
   expect_failure(m, boost::graph_traits<SM>::null_halfedge(), SMP::ERROR_INVALID_BORDER_HALFEDGE);
   const auto interior = halfedge(*faces(m).begin(), m);
   BOOST_REQUIRE(!is_border(interior, m));
@@ -595,7 +594,7 @@ BOOST_AUTO_TEST_CASE(bad_input_border_loop_of_two_vertices)
   mbp_test::Soup octa;
   octa.points = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   octa.faces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  SM sm = make<SM>(octa);
+  SM sm = mbp_test::make_mesh<SM>(octa);
   SM_seam_edges se = sm.add_property_map<SM_edge, bool>("e:seam", false).first;
   SM_seam_vertices sv = sm.add_property_map<SM_vertex, bool>("v:seam", false).first;
   Seam_sm seam(sm, se, sv);
@@ -614,7 +613,7 @@ BOOST_AUTO_TEST_CASE(bad_input_no_interior_vertex)
   mbp_test::Soup fan;  // a strip of triangles: every vertex is on the border
   fan.points = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
   fan.faces = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}};
-  SM m = make<SM>(fan);
+  SM m = mbp_test::make_mesh<SM>(fan);
   expect_failure(m, mbp_test::longest_border(m), SMP::ERROR_NO_INTERIOR_VERTEX);
 }
 
@@ -624,11 +623,11 @@ BOOST_AUTO_TEST_CASE(bad_input_zero_area_triangle)
   mbp_test::Soup sq;
   sq.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0., 0}};
   sq.faces = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
-  SM m = make<SM>(sq);
+  SM m = mbp_test::make_mesh<SM>(sq);
   expect_failure(m, mbp_test::longest_border(m), SMP::ERROR_DEGENERATE_FACE);
   // also a triangle of a real size with an edge of length zero (duplicated point)
   sq.points[4] = {0., 0., 0.};
-  SM m2 = make<SM>(sq);
+  SM m2 = mbp_test::make_mesh<SM>(sq);
   expect_failure(m2, mbp_test::longest_border(m2), SMP::ERROR_DEGENERATE_FACE);
 }
 
@@ -638,7 +637,7 @@ BOOST_AUTO_TEST_CASE(bad_input_non_finite_coordinates)
   {
     mbp_test::Soup soup = mbp_test::bumpy_disk();
     soup.points[3][1] = bad;
-    SM m = make<SM>(soup);
+    SM m = mbp_test::make_mesh<SM>(soup);
     expect_failure(m, mbp_test::longest_border(m), SMP::ERROR_NON_FINITE_COORDINATES);
   }
 }
@@ -646,7 +645,7 @@ BOOST_AUTO_TEST_CASE(bad_input_non_finite_coordinates)
 BOOST_AUTO_TEST_CASE(bad_input_not_a_disk)
 {
   // genus one with a hole
-  SM torus = make<SM>(mbp_test::punctured_torus());
+  SM torus = mbp_test::make_mesh<SM>(mbp_test::punctured_torus());
   expect_failure(torus, mbp_test::longest_border(torus), SMP::ERROR_NO_TOPOLOGICAL_DISC);
 
   // two fans glued at one border vertex: the border loop passes twice through it

@@ -109,24 +109,7 @@ std::string fixed(double x, int decimals = 4)
   return b;
 }
 
-std::string esc(const std::string& s)
-{
-  std::string e;
-  for(char c : s)
-  {
-    switch(c)
-    {
-    case '&': e += "&amp;"; break;
-    case '<': e += "&lt;"; break;
-    case '>': e += "&gt;"; break;
-    case '"': e += "&quot;"; break;
-    default:
-      // control characters are not allowed in XML 1.0
-      e += (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n') ? '?' : c;
-    }
-  }
-  return e;
-}
+std::string esc(const std::string& s) { return mbp_cli::detail::xml_escaped(s); }
 
 // The value of a color bar's tick, short: 0.001, 0.25, 3e-05.
 std::string tick_text(double x)

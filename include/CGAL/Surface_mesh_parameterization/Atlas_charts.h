@@ -44,15 +44,12 @@ struct Subset_surface
 {
   Atlas_surface mesh;
   std::vector<std::array<int, 3> > corner_ids;
-  std::vector<std::size_t> face_polygon;  // the input polygon of face i
   bool built = false;
 };
 
 inline Subset_surface make_subset_surface(const Atlas_triangles& t, const std::vector<std::size_t>& faces)
 {
   Subset_surface s;
-  for(std::size_t f : faces)
-    s.face_polygon.push_back(t.polygon(f));
   std::vector<int> vertex_of;
   s.corner_ids = fan_vertex_ids(t, faces, subset_neighbors(t, faces), vertex_of);
   for(int v : vertex_of)
@@ -117,23 +114,27 @@ inline bool flatten_disk(Subset_surface& s, Atlas_chart& chart)
   return true;
 }
 
-// The edges inside an input polygon (between two of its triangles): the seams avoid them, so
-// that every input polygon keeps one UV per corner.
-inline Atlas_surface::Property_map<Atlas_surface::Edge_index, bool> polygon_diagonals(Subset_surface& s)
+// The edges inside an input polygon (between two of its triangles) of the subset `faces` of
+// `t` (face i of `s` is faces[i]): the seams avoid them, so that every input polygon keeps one
+// UV per corner.
+inline Atlas_surface::Property_map<Atlas_surface::Edge_index, bool>
+polygon_diagonals(Subset_surface& s, const Atlas_triangles& t, const std::vector<std::size_t>& faces)
 {
+  auto polygon = [&](Atlas_face f) { return t.polygon(faces[std::size_t(f)]); };
   auto diagonal = s.mesh.add_property_map<Atlas_surface::Edge_index, bool>("e:atlas_diagonal", false).first;
   for(auto e : edges(s.mesh))
     if(!is_border(e, s.mesh))
     {
       const auto h = halfedge(e, s.mesh);
-      diagonal[e] = s.face_polygon[std::size_t(face(h, s.mesh))] == s.face_polygon[std::size_t(face(opposite(h, s.mesh), s.mesh))];
+      diagonal[e] = polygon(face(h, s.mesh)) == polygon(face(opposite(h, s.mesh), s.mesh));
     }
   return diagonal;
 }
 
-// Any other surface cut open along automatic seams (around the input polygons) into a disk,
-// then flattened.
-inline bool flatten_with_seams(Subset_surface& s, Atlas_chart& chart)
+// Any other surface (the subset `faces` of `t`) cut open along automatic seams (around the
+// input polygons) into a disk, then flattened.
+inline bool flatten_with_seams(Subset_surface& s, const Atlas_triangles& t, const std::vector<std::size_t>& faces,
+                               Atlas_chart& chart)
 {
   typedef Atlas_surface::Property_map<Atlas_surface::Edge_index, bool>  Seam_edges;
   typedef Atlas_surface::Property_map<Atlas_vertex, bool>               Seam_vertices;
@@ -142,7 +143,7 @@ inline bool flatten_with_seams(Subset_surface& s, Atlas_chart& chart)
   Seam_vertices vertices_map = s.mesh.add_property_map<Atlas_vertex, bool>("v:atlas_seam", false).first;
   Disk_seams_report seams;
   if(compute_disk_seams(s.mesh, edges_map, vertices_map, Disk_seams_options(), &seams,
-                        parameters::edge_is_constrained_map(polygon_diagonals(s))) != OK)
+                        parameters::edge_is_constrained_map(polygon_diagonals(s, t, faces))) != OK)
     return false;
   Seam_mesh seam_mesh(s.mesh, edges_map, vertices_map);
   seam_mesh.set_seam_edges_number(seams.number_of_seam_edges);
@@ -165,7 +166,7 @@ inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size
 {
   Subset_surface s = make_subset_surface(t, faces);
   chart.faces = faces;
-  if(s.built && (is_topological_disk(s.mesh) ? flatten_disk(s, chart) : flatten_with_seams(s, chart)))
+  if(s.built && (is_topological_disk(s.mesh) ? flatten_disk(s, chart) : flatten_with_seams(s, t, faces, chart)))
     return true;
   chart = unfold_isometrically(t, faces);
   return is_one_to_one_chart(t, chart);

@@ -72,11 +72,8 @@ inline int floor_log2(int n)
 // `level` = floor(log2(length)), `tail` = start + length - 2^level.
 struct Mask_run
 {
-  int row = 0;
-  int start = 0;
-  int length = 0;
-  int level = 0;
-  int tail = 0;
+  int row = 0, start = 0, length = 0;
+  int level = 0, tail = 0;
 };
 
 // A rectangle of set cells of a mask: the rows row .. row + height - 1, with
@@ -84,13 +81,8 @@ struct Mask_run
 // columns start .. start + length - 1, with `level` and `tail` as in Mask_run.
 struct Mask_band
 {
-  int row = 0;
-  int last_row = 0;
-  int row_level = 0;
-  int start = 0;
-  int length = 0;
-  int tail = 0;
-  int level = 0;
+  int row = 0, last_row = 0, row_level = 0;
+  int start = 0, length = 0, tail = 0, level = 0;
 };
 
 // The runs and bands of a mask (views into the packer's workspace).
