@@ -25,13 +25,37 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <filesystem>
 #include <iterator>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace mbp_benchmark {
+
+// The mesh files (.off, .obj, .ply, .stl) of the folder `dir`, sorted; when `only` is not
+// empty, those of its file names only. Empty when the folder cannot be read.
+inline std::vector<std::filesystem::path> mesh_files_in(const std::string& dir,
+                                                        const std::vector<std::string>& only = {})
+{
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for(const auto& entry : std::filesystem::directory_iterator(dir, ec))
+  {
+    const std::string ext = entry.path().extension().string();
+    const std::string name = entry.path().filename().string();
+    if((ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl") &&
+       (only.empty() || std::find(only.begin(), only.end(), name) != only.end()))
+      files.push_back(entry.path());
+  }
+  if(ec)
+    files.clear();
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 // Why the mesh is not a single disk ("2 components", "closed", "3 borders", "genus 1"), or an
 // empty string when it is one.

@@ -89,20 +89,12 @@ using mbp_benchmark::not_a_disk;
 int main(int argc, char** argv)
 {
   const std::string dir = (argc > 1) ? argv[1] : MBP_MESH_DIR;
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for(const auto& entry : std::filesystem::directory_iterator(dir, ec))
-  {
-    const std::string ext = entry.path().extension().string();
-    if(ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl")
-      files.push_back(entry.path());
-  }
-  if(ec || files.empty())
+  const std::vector<std::filesystem::path> files = mbp_benchmark::mesh_files_in(dir);
+  if(files.empty())
   {
     std::cerr << "error: no mesh in '" << dir << "'\n";
     return 1;
   }
-  std::sort(files.begin(), files.end());
 
   std::printf("| mesh | V | F | border | angle dist. DCP circle | angle dist. DCP measured | ratio |"
               " L2 circle | L2 measured | flips circle | flips measured | measured convex |\n");

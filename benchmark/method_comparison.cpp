@@ -1589,22 +1589,12 @@ int run_scale_mode(const std::string& dir, std::vector<Scale_case> cases, Plan& 
 int run_directory_mode(const std::string& dir, const std::vector<std::string>& only, Plan& plan,
                        std::vector<Mesh_result>& results, std::vector<std::string>& skipped)
 {
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for(const auto& entry : std::filesystem::directory_iterator(dir, ec))
-  {
-    const std::string ext = entry.path().extension().string();
-    const std::string file = entry.path().filename().string();
-    if((ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl") &&
-       (only.empty() || std::find(only.begin(), only.end(), file) != only.end()))
-      files.push_back(entry.path());
-  }
-  if(ec || files.empty())
+  const std::vector<std::filesystem::path> files = mbp_benchmark::mesh_files_in(dir, only);
+  if(files.empty())
   {
     std::cerr << "error: no mesh in '" << dir << "'\n";
     return 1;
   }
-  std::sort(files.begin(), files.end());
   for(int m = 0; m < NUMBER_OF_METHODS; ++m)
     if(method_available(m))
       plan.timed.push_back(m);

@@ -657,22 +657,12 @@ int main(int argc, char** argv)
   if(runs < 1)
     return usage(argv[0]);
 
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for(const auto& entry : std::filesystem::directory_iterator(dir, ec))
-  {
-    const std::string ext = entry.path().extension().string();
-    const std::string name = entry.path().filename().string();
-    if((ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl") &&
-       (only.empty() || std::find(only.begin(), only.end(), name) != only.end()))
-      files.push_back(entry.path());
-  }
-  if(ec || files.empty())
+  const std::vector<std::filesystem::path> files = mbp_benchmark::mesh_files_in(dir, only);
+  if(files.empty())
   {
     std::cerr << "error: no mesh in '" << dir << "'\n";
     return 1;
   }
-  std::sort(files.begin(), files.end());
 
   std::vector<Mesh_entry> meshes;
   std::vector<std::string> skipped;
