@@ -65,9 +65,10 @@ namespace Surface_mesh_parameterization {
 /// multithreaded (OpenBLAS starts a thread per core by default, and its threads spin: beside
 /// another busy program, they wait for each other). The traits set the BLAS's thread count
 /// before each factorization: `blas_threads` (default 1; 0 leaves the BLAS alone). Measured
-/// on 2 cores (`benchmark/README.md`, section *BLAS threads and batches*): a 714k-vertex disk
-/// takes 9.1-9.6 s with one BLAS thread against 8.3-8.5 s with two when the machine is idle,
-/// and 14 s against 61 s beside a program that keeps both cores busy. The count is set with
+/// on 2 cores, the command line on a 714k-vertex disk (`benchmark/README.md`, section *BLAS
+/// threads and batches*): idle, 9.1-9.6 s with one BLAS thread against 8.3-8.5 s with
+/// OpenBLAS's default of one per core; beside a program that keeps both cores busy, 14 s
+/// against 61 s (with a third, unrelated build running too: 29 s against 60 s). The count is set with
 /// OpenBLAS's `openblas_set_num_threads()`, which is process-wide (it applies to every BLAS
 /// call of the program, from any thread), and only when CMake found that the BLAS linked by
 /// CHOLMOD is OpenBLAS (the target `MeasuredParameterization::Cholmod` then defines
