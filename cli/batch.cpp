@@ -529,16 +529,21 @@ bool Batch::rewrite_report()
   return out.good() && !ec;
 }
 
-// The progress bar on stderr, when it is a terminal.
+// The progress bar on stderr, when it is a terminal; `last`: the end of its line.
 void Batch::progress(bool last)
 {
   if(!m_tty)
     return;
+  if(last)
+  {
+    std::cerr << "\n";
+    return;
+  }
   const std::size_t total = m_inputs.size(), ended = m_done + m_skipped + m_failed;
   const std::size_t width = 30, filled = total == 0 ? width : width * ended / total;
   std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, '.') << "] " << ended << "/"
-            << total << " meshes, " << m_failed << " failed, " << m_running.size() << " running\033[K"
-            << (last ? "\n" : "") << std::flush;
+            << total << " meshes, " << m_skipped << " skipped, " << m_failed << " failed, " << m_running.size()
+            << " running\033[K" << std::flush;
 }
 
 int Batch::run()
