@@ -79,6 +79,7 @@ struct Run
 struct Scratch
 {
   fs::path root, work;
+  fs::path standard_input;  // when set, the program's stdin (otherwise the test's)
 
   Scratch()
   {
@@ -143,6 +144,9 @@ struct Scratch
       const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       if(o < 0 || e < 0 || ::chdir(cwd.c_str()) != 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0)
+        ::_exit(126);
+      const int i = standard_input.empty() ? 0 : ::open(standard_input.c_str(), O_RDONLY);
+      if(i < 0 || ::dup2(i, 0) < 0)
         ::_exit(126);
       if(when_stopped != nullptr)
         ::setenv("MBP_CLI_TEST_STOP_BEFORE_PUBLISH", "1", 1);
@@ -2824,7 +2828,7 @@ BOOST_AUTO_TEST_CASE(batch_reports_every_mesh_and_resumes)
 
 // --shard=I/N: the slices partition the sorted inputs (input K in slice K mod N + 1), the
 // union of their outputs is the unsharded run's, byte for byte; a list file (in any order,
-// with comments and empty lines) gives the same slices as the folder.
+// with comments and empty lines) or the same list on stdin gives the same slices as the folder.
 BOOST_AUTO_TEST_CASE(batch_shards_partition_the_inputs)
 {
   Scratch scratch;
@@ -2868,6 +2872,16 @@ BOOST_AUTO_TEST_CASE(batch_shards_partition_the_inputs)
   for(const auto& line : read_report(scratch.work / "listed/report-shard-2-of-3.jsonl"))
     from_list.insert(fs::path(line.first).filename().string());
   BOOST_TEST((from_list == std::set<std::string>{names[1], names[4]}));
+
+  // the same list on stdin (--batch=-): relative paths from the working directory
+  scratch.standard_input = scratch.work / "list.txt";
+  const Run piped = scratch.run({"--batch=-", "--output-dir=piped", "--shard=3/3"});
+  scratch.standard_input.clear();
+  BOOST_REQUIRE_EQUAL(piped.code, 0);
+  std::set<std::string> from_stdin;
+  for(const auto& line : read_report(scratch.work / "piped/report-shard-3-of-3.jsonl"))
+    from_stdin.insert(fs::path(line.first).filename().string());
+  BOOST_TEST((from_stdin == std::set<std::string>{names[2], names[5]}));
 }
 
 // Wrong batch options: a specific message, exit status 2, no output folder.
