@@ -28,6 +28,9 @@
 # 3. --shard=1/3, 2/3, 3/3: the union of their outputs against the unsharded run, with cmp.
 #    Target: byte-identical.
 # The machine's load (uptime) is printed before each part: say it with the figures.
+# Environment: REPEATS, BUSY_REPEATS (runs per configuration), BUSY_THREADS (spinning
+# processes, default 2), PARTS (default "1 2 3"), CONFIGS (default "--threads=0 --threads=1
+# --threads=2").
 set -u
 if [ $# -lt 1 ] || [ ! -x "$1" ]; then
   echo "usage: bash benchmark/threads_and_batch.sh CLI [WORK_DIR] [BASELINE_CLI]" >&2
@@ -40,6 +43,9 @@ HERE=$(cd "$(dirname "$0")/.." && pwd)
 DATA=${MBP_SHARED_DATA_DIR:-$HERE/../shared/data}
 REPEATS=${REPEATS:-3}
 BUSY_REPEATS=${BUSY_REPEATS:-2}
+BUSY_THREADS=${BUSY_THREADS:-2}   # the spinning processes of the busy load
+PARTS=${PARTS:-"1 2 3"}           # the parts to run
+CONFIGS=${CONFIGS:-"--threads=0 --threads=1 --threads=2"}
 mkdir -p "$WORK"
 cd "$WORK" || exit 2
 
@@ -49,7 +55,7 @@ elapsed() { echo "$2 - $1" | bc -l | xargs printf "%.2f"; }
 # the busy load: two processes spinning, each stopped by timeout after $1 seconds at most
 BUSY_PIDS=()
 start_busy() {
-  for _ in 1 2; do
+  for _ in $(seq "$BUSY_THREADS"); do
     timeout "$1" sh -c 'while :; do :; done' &
     BUSY_PIDS+=($!)
   done
@@ -74,17 +80,18 @@ time_disk() {
 median() { printf "%s\n" "$@" | sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'; }
 
 # --- 1. the 714k-vertex disk ------------------------------------------------------------------
+part1() {
 DISK=$WORK/bimba_714k.obj
 if [ ! -s "$DISK" ]; then
   echo "making the 714k-vertex disk: refine_mesh.py bimba_i.obj 2" >&2
   python3 "$HERE/scripts/refine_mesh.py" "$DATA/meshes/bimba_i.obj" 2 "$DISK" >&2 || exit 1
 fi
-echo "## 714k-vertex disk, --single-chart --solver=cholmod"
+echo "## 714k-vertex disk, --single-chart --solver=cholmod, busy load: $BUSY_THREADS spinning processes"
 echo "load before: $(uptime)"
 echo
 echo "| run | idle (s, each) | idle median | busy (s, each) | busy median | busy / idle |"
 echo "|---|---|---|---|---|---|"
-configs=("--threads=0" "--threads=1" "--threads=2")
+read -r -a configs <<< "$CONFIGS"
 [ -n "$BASELINE" ] && configs=("baseline" "${configs[@]}")
 for config in "${configs[@]}"; do
   if [ "$config" = baseline ]; then cmd=("$BASELINE"); else cmd=("$CLI" "$config"); fi
@@ -100,8 +107,10 @@ for config in "${configs[@]}"; do
 done
 echo
 echo "load after: $(uptime)"
+}
 
 # --- 2. batch throughput ------------------------------------------------------------------------
+part2() {
 find "$DATA/meshes" "$DATA/atlas" -maxdepth 1 -type f \
   \( -iname '*.off' -o -iname '*.obj' -o -iname '*.ply' -o -iname '*.stl' \) | sort > all_meshes.txt
 count=$(wc -l < all_meshes.txt)
@@ -126,8 +135,11 @@ done
 echo
 echo "--jobs=2 / --jobs=1: $(echo "${rate[2]} / ${rate[1]}" | bc -l | xargs printf "%.2f")x meshes/s"
 echo "load after: $(uptime)"
+}
 
 # --- 3. shards --------------------------------------------------------------------------------
+part3() {
+[ -f batch_j1/report.jsonl ] || { echo "part 3 needs the --jobs=1 run of part 2" >&2; return 1; }
 echo
 echo "## shards 1/3, 2/3, 3/3 against the unsharded --jobs=1 run"
 rm -rf shards && mkdir shards
@@ -141,3 +153,6 @@ for f in batch_j1/*_uv.obj; do
 done
 extra=$(comm -13 <(cd batch_j1 && ls *_uv.obj | sort) <(cd shards && ls *_uv.obj | sort) | wc -l)
 echo "outputs: $same byte-identical, $different different, $missing missing from the shards, $extra only in the shards"
+}
+
+for part in $PARTS; do "part$part"; done
