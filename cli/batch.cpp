@@ -209,11 +209,13 @@ std::map<std::string, Report_line> read_report(const fs::path& path)
   return lines;
 }
 
-// Whether the mesh was done by an earlier run: its last line says OK, its outputs exist.
-bool done_before(const std::map<std::string, Report_line>& report, const std::string& input)
+// Whether the mesh was done by an earlier run: its last line says OK and names `output`
+// (the output this run would write), its outputs exist.
+bool done_before(const std::map<std::string, Report_line>& report, const std::string& input, const std::string& output)
 {
   const auto it = report.find(input);
-  if(it == report.end() || it->second.status != "OK" || it->second.outputs.empty())
+  if(it == report.end() || it->second.status != "OK" ||
+     std::find(it->second.outputs.begin(), it->second.outputs.end(), output) == it->second.outputs.end())
     return false;
   std::error_code ec;
   for(const std::string& output : it->second.outputs)
@@ -557,7 +559,7 @@ int Batch::run()
   m_tty = ::isatty(2) != 0;
   std::vector<std::size_t> todo;
   for(std::size_t k = 0; k < m_inputs.size(); ++k)
-    if(!m_b.force && done_before(m_before, m_inputs[k]))
+    if(!m_b.force && done_before(m_before, m_inputs[k], m_outputs[k]))
       ++m_skipped;
     else
       todo.push_back(k);
