@@ -249,7 +249,6 @@ std::string one_line(const std::string& json)
 
 struct Job
 {
-  std::size_t index = 0;  // in the list of this run
   std::string input, output;
   std::string out_path, err_path;  // the worker's stdout and stderr
   Clock::time_point start;
@@ -392,7 +391,6 @@ private:
   fs::path m_dir, m_report, m_scratch;  // --output-dir, the report, the workers' stdout and stderr
   std::vector<std::string> m_inputs, m_outputs;  // of this shard, in order
   std::map<std::string, Report_line> m_before;   // the report of the earlier runs
-  std::vector<std::string> m_lines;              // this run's line of each input (empty: none yet)
   std::map<pid_t, Job> m_running;
   std::size_t m_done = 0, m_skipped = 0, m_failed = 0;
   bool m_report_ok = true;
@@ -434,14 +432,12 @@ std::string Batch::prepare()
   m_program = fs::exists("/proc/self/exe", ec) ? fs::read_symlink("/proc/self/exe", ec).string() : m_argv[0];
   if(m_program.empty())
     m_program = m_argv[0];
-  m_lines.assign(m_inputs.size(), std::string());
   return std::string();
 }
 
 void Batch::start(std::size_t k)
 {
   Job job;
-  job.index = k;
   job.input = m_inputs[k];
   job.output = m_outputs[k];
   job.out_path = (m_scratch / (std::to_string(k) + ".json")).string();
@@ -453,8 +449,7 @@ void Batch::start(std::size_t k)
     Outcome o;
     o.message = "could not start the worker " + m_program + ": " + std::strerror(errno);
     ++m_failed;
-    m_lines[k] = report_line(job, o, 0.);
-    append(m_lines[k]);
+    append(report_line(job, o, 0.));
     return;
   }
   // A test aid (test_cli, batch_reports_every_mesh_and_resumes): the worker of the input whose
@@ -479,7 +474,6 @@ void Batch::finish(pid_t pid, int status)
   std::error_code ec;
   fs::remove(job.out_path, ec);
   fs::remove(job.err_path, ec);
-  m_lines[job.index] = report_line(job, o, seconds);
   if(o.ok)
     ++m_done;
   else
@@ -491,7 +485,7 @@ void Batch::finish(pid_t pid, int status)
     std::cerr << "error: " << (o.message.compare(0, job.input.size(), job.input) == 0 ? "" : job.input + ": ")
               << o.message << "\n";
   }
-  append(m_lines[job.index]);
+  append(report_line(job, o, seconds));
 }
 
 // Appends a line to the report at once (an interrupted batch keeps it).
