@@ -23,6 +23,8 @@
 //                             [--distance=poisson|METHOD|straightest] [--border=auto|conformal|measured|circle]
 //                             [--solver=cholmod|cholmod-nd|ldlt] [--svg=FILE] [--json] [--no-repair]
 //                             [--write-seams=FILE.selection.txt]
+//   measured_parameterization --batch=FOLDER|LIST|- --output-dir=DIR [--jobs=N] [--shard=I/N]
+//                             [--force] [the options of a mode] [--threads=N]
 //
 // Reads OFF, OBJ, PLY or STL (default: a real mesh of the project's data, or a generated
 // curved disk when that file is missing) and writes an OBJ (default: <input file stem>_uv.obj):
@@ -36,8 +38,10 @@
 // file. The library does no IO; this program is the IO layer: options.h (the command line),
 // run.h (the mesh and its atlas or parameterization: the only code that calls the library),
 // obj_writer.h, svg_writer.h, json_output.h and summary.h (the outputs), file_output.h (the
-// files, all or nothing).
+// files, all or nothing). --batch runs many meshes, each in a worker process that is this
+// program run on one mesh (batch.h).
 
+#include "batch.h"
 #include "file_output.h"
 #include "json_output.h"
 #include "obj_writer.h"
@@ -196,6 +200,8 @@ int main(int argc, char** argv)
     std::cout << usage(default_mesh);
     return EXIT_SUCCESS;
   }
+  if(options.batch.active())
+    return run_batch(options, argc, argv);
 
   // the input, the output names, then the mesh
   Run run;

@@ -29,6 +29,8 @@ const char* const usage_synopsis =
     "                                 [--solver=cholmod|cholmod-nd|ldlt] [--output=FILE] [--svg=FILE] [--json]\n"
     "                                 [--write-seams=FILE.selection.txt]\n"
     "                                 [--no-repair] [--help]\n"
+    "       measured_parameterization --batch=FOLDER|LIST|- --output-dir=DIR [--jobs=N] [--shard=I/N]\n"
+    "                                 [--force] [the options of a mode] [--threads=N]\n"
     "\n"
     "By default (--atlas) makes a packed texture atlas of any mesh: the file is read as a polygon\n"
     "soup and repaired (equal points merged, duplicate and degenerate polygons, non-manifold\n"
@@ -133,9 +135,31 @@ const char* const usage_notes =
     "                     --single-chart: the UV layout, faces colored by their angle\n"
     "                     distortion, flipped faces in red\n"
     "  --json             print a JSON object on stdout instead of the one-line summary\n"
+    "  --threads=N        threads of the BLAS under CHOLMOD (OpenBLAS; 0: leave the BLAS\n"
+    "                     alone, e.g. to OPENBLAS_NUM_THREADS) and, from 2 on, of the package\n"
+    "                     itself (a second thread for the --single-chart method). Default 1:\n"
+    "                     the fastest on a busy machine (benchmark/README.md)\n"
     "  --no-repair        fail when the layout has flipped faces (by default the border is\n"
     "                     blended toward a circle, as little as needed, until none is left)\n"
     "  -h, --help         print this help and exit\n"
+    "\n"
+    "Batch mode: many meshes, each in a worker process running this program.\n"
+    "  --batch=SOURCE     the inputs: a FOLDER (its .off, .obj, .ply and .stl files), a LIST\n"
+    "                     file (one path a line, relative to the list's folder; empty lines\n"
+    "                     and lines starting with # are skipped), or - (the list on stdin)\n"
+    "  --output-dir=DIR   where DIR/<stem>_uv.obj of each input is written (created when\n"
+    "                     missing; <name>_uv.obj with its extension when two inputs share a\n"
+    "                     stem), and DIR/report.jsonl (DIR/report-shard-I-of-N.jsonl with\n"
+    "                     --shard): one JSON object a line per mesh, {\"input\", \"outputs\",\n"
+    "                     \"status\" (OK or FAILED), \"message\", \"figures\" (the --json\n"
+    "                     document of the mesh), \"seconds\"}\n"
+    "  --jobs=N           N worker processes at once (default 1), each with --threads\n"
+    "  --shard=I/N        only the I-th of N slices of the sorted list of inputs (input K,\n"
+    "                     from 0, is in slice K mod N + 1): N machines share a data set\n"
+    "  --force            redo every mesh; by default a mesh whose outputs exist and whose\n"
+    "                     last report line says OK is skipped\n"
+    "The options of the atlas or of --single-chart apply to every mesh. A failed mesh never\n"
+    "stops the batch. A progress bar is drawn on stderr when it is a terminal.\n"
     "\n"
     "The atlas summary gives the input's points and polygons, the charts, the utilization of the\n"
     "square (UV area of the charts over its area), the repairs made to the input, the area\n"
@@ -153,7 +177,8 @@ const char* const usage_notes =
     "--no-repair, the program fails.\n"
     "\n"
     "Exit status: 0 on success; 1 when the input cannot be parameterized or an output file\n"
-    "cannot be written (no output file is then left behind); 2 on a command-line error.\n";
+    "cannot be written (no output file is then left behind); 2 on a command-line error. A\n"
+    "batch: 0 when every mesh is done, 1 when one failed or the report cannot be written.\n";
 
 bool starts_with(const std::string& s, const std::string& prefix)
 {
@@ -267,6 +292,25 @@ std::string set_file(const std::string& value, const std::string& name, const ch
   return std::string();
 }
 
+// --shard=I/N, 1 <= I <= N
+std::string set_shard(const std::string& value, Options& o)
+{
+  const std::size_t slash = value.find('/');
+  const std::string expected = " (expected I/N, whole numbers with 1 <= I <= N, e.g. --shard=2/3)";
+  if(slash == std::string::npos)
+    return "bad value '" + value + "' of --shard" + expected;
+  unsigned int i = 0, n = 0;
+  if(!set_count(value.substr(0, slash), "--shard", 1, 1u << 20, i).empty() ||
+     !set_count(value.substr(slash + 1), "--shard", 1, 1u << 20, n).empty())
+    return "bad value '" + value + "' of --shard" + expected;
+  if(i > n)
+    return "--shard=" + value + ": slice " + std::to_string(i) + " of " + std::to_string(n) +
+           " does not exist" + expected;
+  o.batch.shard = i;
+  o.batch.shards = n;
+  return std::string();
+}
+
 // An option with a value, `--name=value`.
 struct Value_option
 {
@@ -312,6 +356,14 @@ public:
     }
     else if(starts_with(arg, "--atlas=") || starts_with(arg, "--single-chart="))
       return "option " + arg.substr(0, arg.find('=')) + " takes no value";
+    else if(arg == "--force")
+    {
+      if(m_o.batch.force)
+        return "option --force is given twice";
+      m_o.batch.force = true;
+    }
+    else if(starts_with(arg, "--force="))
+      return "option --force takes no value";
     else
       return value_option(arg);
     return std::string();
@@ -328,6 +380,9 @@ public:
     if(!seen("--distance") && m_o.border == Border::automatic)
       m_o.distance = "fast-marching";
     const std::vector<std::string>& p = m_positional;
+    const std::string batch_problem = check_batch();
+    if(!batch_problem.empty())
+      return batch_problem;
     if(p.size() > 2)
       return "too many arguments: '" + p[2] + "' (expected at most INPUT and OUTPUT.obj)";
     if(p.size() > 0)
@@ -374,6 +429,31 @@ private:
     return std::string();
   }
 
+  // The batch's options go together, and exclude those naming the files of one run.
+  std::string check_batch() const
+  {
+    if(!m_o.batch.active())
+    {
+      for(const char* name : {"--output-dir", "--jobs", "--shard"})
+        if(seen(name))
+          return std::string("option ") + name + " is an option of the batch mode: it needs --batch=FOLDER|LIST|-";
+      if(m_o.batch.force)
+        return "option --force is an option of the batch mode: it needs --batch=FOLDER|LIST|-";
+      return std::string();
+    }
+    if(!seen("--output-dir"))
+      return "--batch needs --output-dir=DIR (where the outputs and report.jsonl are written)";
+    if(!m_positional.empty())
+      return "--batch takes no INPUT or OUTPUT argument ('" + m_positional[0] +
+             "'): the inputs are those of --batch=" + m_o.batch.source;
+    for(const char* name : {"--output", "--svg", "--seams", "--write-seams"})
+      if(seen(name))
+        return std::string("option ") + name + " names the file of one run: it cannot be combined with --batch";
+    if(m_o.json)
+      return "option --json cannot be combined with --batch (the report file holds each mesh's JSON)";
+    return std::string();
+  }
+
   bool seen(const std::string& name) const
   {
     for(const Value_option& v : m_values)
@@ -398,7 +478,7 @@ private:
   std::vector<std::string> m_positional;
   bool m_options_ended = false;
   bool m_atlas = false, m_single_chart = false;  // --atlas, --single-chart
-  Value_option m_values[10] = {
+  Value_option m_values[15] = {
     {"--center", set_center, false},
     {"--distance", set_distance, false},
     {"--border", set_border, false},
@@ -413,7 +493,15 @@ private:
     {"--resolution",
      [](const std::string& v, Options& o) { return set_count(v, "--resolution", 8, 1u << 16, o.resolution); }, false},
     {"--gutter", [](const std::string& v, Options& o) { return set_count(v, "--gutter", 0, 1u << 14, o.gutter); },
-     false}};
+     false},
+    {"--threads", [](const std::string& v, Options& o) { return set_count(v, "--threads", 0, 256, o.threads); },
+     false},
+    {"--batch", [](const std::string& v, Options& o) { return set_file(v, "--batch", "FOLDER|LIST|-", o.batch.source); },
+     false},
+    {"--output-dir",
+     [](const std::string& v, Options& o) { return set_file(v, "--output-dir", "DIR", o.batch.output_dir); }, false},
+    {"--jobs", [](const std::string& v, Options& o) { return set_count(v, "--jobs", 1, 256, o.batch.jobs); }, false},
+    {"--shard", set_shard, false}};
 };
 
 } // namespace

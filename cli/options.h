@@ -39,6 +39,19 @@ const char* border_name(Border b);
 /// the name of a mode: atlas or single-chart
 const char* mode_name(Mode m);
 
+/// the batch mode (`--batch=FOLDER|LIST|-`, cli/batch.h): many inputs to one output folder
+struct Batch_options
+{
+  std::string source;            // --batch=: a folder, a list file (one path a line), or - (stdin)
+  std::string output_dir;        // --output-dir=DIR
+  unsigned int jobs = 1;         // --jobs=N: worker processes at once
+  unsigned int shard = 1;        // --shard=I/N: the I-th (1-based) ...
+  unsigned int shards = 1;       // ... of N slices of the sorted input list
+  bool force = false;            // --force: redo the meshes done before
+
+  bool active() const { return !source.empty(); }
+};
+
 struct Options
 {
   std::string input;        // empty: the built-in default mesh
@@ -59,6 +72,10 @@ struct Options
   std::string center = "poisson";   // poisson, or geodesic:METHOD (when not fixed_center)
   std::string distance = "poisson"; // poisson, a geodesic METHOD, or straightest (default: see parse)
   Solver solver = has_cholmod() ? Solver::cholmod : Solver::ldlt;
+  // --threads=N: the BLAS threads of CHOLMOD (0: the BLAS is left alone) and, from 2 on, the
+  // package's own threads (CGAL::Parallel_tag)
+  unsigned int threads = 1;
+  Batch_options batch;
 
   std::string center_name() const
   {

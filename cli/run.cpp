@@ -230,17 +230,27 @@ struct Context
 // The call of the parameterizer of one border policy (the policy of --border, so that each
 // border is instantiated with the command line's center locator and border distance once per
 // solver and mesh type). Returns the library's report of the call (its status included).
-template <class TriangleMesh, class BorderPolicy, class SolverTraits>
-SMP::Parameterization_report parameterize_with(Context<TriangleMesh>& c, const BorderPolicy& border,
-                                               const SolverTraits& traits)
+template <class ConcurrencyTag, class TriangleMesh, class BorderPolicy, class SolverTraits>
+SMP::Parameterization_report parameterize_with_tag(Context<TriangleMesh>& c, const BorderPolicy& border,
+                                                   const SolverTraits& traits)
 {
-  const SMP::Conformal_parameterizer_3<TriangleMesh, BorderPolicy, SolverTraits> parameterizer(
+  const SMP::Conformal_parameterizer_3<TriangleMesh, BorderPolicy, SolverTraits, ConcurrencyTag> parameterizer(
     border, traits, c.options.repair ? SMP::BLEND_TOWARD_CIRCLE : SMP::NO_REPAIR);
   SMP::Parameterization_report report;
   // the vertex index map is not used by the parameterizer (it indexes the component itself)
   parameterizer.parameterize(c.tm, c.bhd, c.uvmap, get(CGAL::dynamic_vertex_property_t<int>(), c.tm),
                              c.parameterized, &report);
   return report;
+}
+
+// The same with the package's threads of --threads: CGAL::Parallel_tag from 2 on.
+template <class TriangleMesh, class BorderPolicy, class SolverTraits>
+SMP::Parameterization_report parameterize_with(Context<TriangleMesh>& c, const BorderPolicy& border,
+                                               const SolverTraits& traits)
+{
+  if(c.options.threads >= 2)
+    return parameterize_with_tag<CGAL::Parallel_tag>(c, border, traits);
+  return parameterize_with_tag<CGAL::Sequential_tag>(c, border, traits);
 }
 
 // The parameterization with the solver traits `traits`, for the border policy of --border.
@@ -270,10 +280,12 @@ SMP::Parameterization_report parameterize_with_library(Context<TriangleMesh>& c)
 {
 #ifdef MBP_WITH_CHOLMOD
   typedef SMP::Cholmod_supernodal_cholesky_traits Cholmod;
+  // the BLAS threads of --threads (0: the BLAS is left alone)
+  const int blas_threads = static_cast<int>(c.options.threads);
   if(c.options.solver == mbp_cli::Solver::cholmod)
-    return parameterize_with_solver(c, Cholmod(Cholmod::AMD));
+    return parameterize_with_solver(c, Cholmod(Cholmod::AMD, blas_threads));
   if(c.options.solver == mbp_cli::Solver::cholmod_nd)
-    return parameterize_with_solver(c, Cholmod(Cholmod::NESTED_DISSECTION));
+    return parameterize_with_solver(c, Cholmod(Cholmod::NESTED_DISSECTION, blas_threads));
 #endif
   return parameterize_with_solver(c, SMP::Default_sparse_cholesky_traits());
 }

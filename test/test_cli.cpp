@@ -79,6 +79,7 @@ struct Run
 struct Scratch
 {
   fs::path root, work;
+  fs::path standard_input;  // when set, the program's stdin (otherwise the test's)
 
   Scratch()
   {
@@ -143,6 +144,9 @@ struct Scratch
       const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       if(o < 0 || e < 0 || ::chdir(cwd.c_str()) != 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0)
+        ::_exit(126);
+      const int i = standard_input.empty() ? 0 : ::open(standard_input.c_str(), O_RDONLY);
+      if(i < 0 || ::dup2(i, 0) < 0)
         ::_exit(126);
       if(when_stopped != nullptr)
         ::setenv("MBP_CLI_TEST_STOP_BEFORE_PUBLISH", "1", 1);
@@ -2704,6 +2708,250 @@ MBP_TIERED_TEST_CASE(messy_real_meshes_get_an_atlas)
       BOOST_TEST_MESSAGE(name << ": " << charts << " charts, utilization " << j.get<double>("utilization"));
       BOOST_TEST(contains(Scratch::read_text(scratch.work / "out.svg"), "chart outlines (" + std::to_string(charts) + ")"));
     }
+}
+
+// ---------------------------------------------------------------- the batch mode (issue 24)
+
+namespace {
+
+// The lines of a batch report, parsed, by input.
+std::map<std::string, boost::property_tree::ptree> read_report(const fs::path& path)
+{
+  std::map<std::string, boost::property_tree::ptree> lines;
+  std::ifstream in(path);
+  BOOST_REQUIRE_MESSAGE(in.good(), "cannot open " << path);
+  std::string line;
+  while(std::getline(in, line))
+  {
+    const boost::property_tree::ptree json = parse_json(line);
+    BOOST_TEST(lines.count(json.get<std::string>("input")) == 0u, "two lines for " << json.get<std::string>("input"));
+    lines[json.get<std::string>("input")] = json;
+  }
+  return lines;
+}
+
+// A line appended to the outputs of a batch: a run that writes an output again replaces the
+// file, and the line is gone. (Inode numbers would not do: a freed inode is reused.)
+const std::string not_rewritten = "# not written again\n";
+
+void mark(const fs::path& path)
+{
+  std::ofstream out(path, std::ios::app | std::ios::binary);
+  out << not_rewritten;
+  BOOST_REQUIRE(out.good());
+}
+
+bool marked(const fs::path& path)
+{
+  const std::string text = Scratch::read_text(path);
+  return text.size() >= not_rewritten.size() &&
+         text.compare(text.size() - not_rewritten.size(), not_rewritten.size(), not_rewritten) == 0;
+}
+
+// Generated disks of different shapes, written as OFF into `folder` ("disk_K.off").
+std::vector<std::string> write_generated_disks(const Scratch& scratch, const std::string& folder, int count)
+{
+  fs::create_directories(scratch.work / folder);
+  std::vector<std::string> names;
+  for(int k = 0; k < count; ++k)
+  {
+    const mbp_test::Soup soup = (k % 3 == 0)   ? mbp_test::polar_disk(4 + k % 4, 14 + 2 * k, 1., 0.6 + 0.05 * k)
+                                : (k % 3 == 1) ? mbp_test::bumpy_disk(4 + k % 3, 16 + k)
+                                               : mbp_test::hex_disk(3 + k % 3, 1., 0.8);
+    names.push_back("disk_" + std::to_string(k) + ".off");
+    scratch.write(folder + "/" + names.back(), off_text(soup));
+  }
+  return names;
+}
+
+} // namespace
+
+// A batch over generated meshes, one of them unreadable and the worker of another killed
+// (SIGKILL, sent by the batch itself when MBP_CLI_TEST_KILL_INPUT names the input: the test
+// aid of cli/batch.cpp): every other mesh is done, each failure is reported on its own line;
+// a second run skips what is done (the outputs are not written again) and redoes the
+// failures; --force redoes everything.
+BOOST_AUTO_TEST_CASE(batch_reports_every_mesh_and_resumes)
+{
+  Scratch scratch;
+  const std::vector<std::string> good = write_generated_disks(scratch, "in", 4);
+  scratch.write("in/bad.off", "OFF\nthis is not a mesh\n");
+  scratch.write("in/killed.off", off_text(mbp_test::polar_disk(5, 16, 1., 0.7)));
+  scratch.write("in/notes.txt", "not an input: not a mesh file name");
+  const std::vector<std::string> batch{"--batch=in", "--output-dir=out", "--jobs=2"};
+
+  ::setenv("MBP_CLI_TEST_KILL_INPUT", "killed.off", 1);
+  const Run first = scratch.run(batch);
+  ::unsetenv("MBP_CLI_TEST_KILL_INPUT");
+  BOOST_TEST(first.code == 1);  // a mesh failed, the batch went on
+  BOOST_TEST(contains(first.out, "6 meshes: 4 done, 0 skipped, 2 failed"), first.out);
+  std::map<std::string, boost::property_tree::ptree> report = read_report(scratch.work / "out/report.jsonl");
+  BOOST_TEST(report.size() == 6u);
+  for(const std::string& name : good)
+  {
+    const boost::property_tree::ptree& line = report["in/" + name];
+    BOOST_TEST(line.get<std::string>("status") == "OK", name);
+    const std::string output = "out/" + fs::path(name).stem().string() + "_uv.obj";
+    BOOST_TEST(line.get_child("outputs").size() == 1u);
+    BOOST_TEST(line.get_child("outputs").front().second.get_value<std::string>() == output);
+    BOOST_TEST(line.get<std::string>("figures.mode") == "atlas");
+    BOOST_TEST(line.get<double>("seconds") > 0.);
+    const Obj obj = read_obj(scratch.work / output, true);
+    BOOST_TEST(obj.v.size() == line.get<std::size_t>("figures.points"));
+    BOOST_TEST(obj.vt.size() == 3 * obj.f.size());  // a UV per corner
+    mark(scratch.work / output);
+  }
+  BOOST_TEST(report["in/bad.off"].get<std::string>("status") == "FAILED");
+  BOOST_TEST(contains(report["in/bad.off"].get<std::string>("message"), "cannot read"));
+  BOOST_TEST(report["in/killed.off"].get<std::string>("status") == "FAILED");
+  BOOST_TEST(contains(report["in/killed.off"].get<std::string>("message"), "killed by signal 9"));
+  BOOST_TEST(report["in/killed.off"].get_child("outputs").empty());
+  BOOST_TEST(!fs::exists(scratch.work / "out/bad_uv.obj"));
+  BOOST_TEST(!fs::exists(scratch.work / "out/killed_uv.obj"));
+  BOOST_TEST(contains(first.err, "killed.off: the worker was killed by signal 9"));
+
+  // the second run: the four done are skipped (their files are not republished), the killed
+  // one is done, the unreadable one fails again
+  const Run second = scratch.run(batch);
+  BOOST_TEST(second.code == 1);
+  BOOST_TEST(contains(second.out, "6 meshes: 1 done, 4 skipped, 1 failed"), second.out);
+  report = read_report(scratch.work / "out/report.jsonl");
+  BOOST_TEST(report.size() == 6u);
+  for(const std::string& name : good)
+    BOOST_TEST(marked(scratch.work / ("out/" + fs::path(name).stem().string() + "_uv.obj")), name << " was written again");
+  BOOST_TEST(report["in/killed.off"].get<std::string>("status") == "OK");
+  BOOST_TEST(fs::exists(scratch.work / "out/killed_uv.obj"));
+  BOOST_TEST(report["in/bad.off"].get<std::string>("status") == "FAILED");
+
+  // a done mesh whose output was removed is done again; --force redoes every mesh
+  fs::remove(scratch.work / ("out/" + fs::path(good[0]).stem().string() + "_uv.obj"));
+  BOOST_TEST(contains(scratch.run(batch).out, "6 meshes: 1 done, 4 skipped, 1 failed"));
+  std::vector<std::string> forced = batch;
+  forced.push_back("--force");
+  BOOST_TEST(contains(scratch.run(forced).out, "6 meshes: 5 done, 0 skipped, 1 failed"));
+  for(const std::string& name : good)
+    BOOST_TEST(!marked(scratch.work / ("out/" + fs::path(name).stem().string() + "_uv.obj")), name << " was not redone");
+  BOOST_TEST(read_report(scratch.work / "out/report.jsonl").size() == 6u);
+}
+
+// --shard=I/N: the slices partition the sorted inputs (input K in slice K mod N + 1), the
+// union of their outputs is the unsharded run's, byte for byte; a list file (in any order,
+// with comments and empty lines) or the same list on stdin gives the same slices as the folder.
+BOOST_AUTO_TEST_CASE(batch_shards_partition_the_inputs)
+{
+  Scratch scratch;
+  std::vector<std::string> names = write_generated_disks(scratch, "in", 7);
+  std::sort(names.begin(), names.end());
+  const Run all = scratch.run({"--batch=in", "--output-dir=all", "--jobs=2"});
+  BOOST_REQUIRE_EQUAL(all.code, 0);
+  BOOST_TEST(contains(all.out, "7 meshes: 7 done"));
+  std::set<std::string> seen;
+  for(int i = 1; i <= 3; ++i)
+  {
+    const std::string dir = "shard" + std::to_string(i), shard = "--shard=" + std::to_string(i) + "/3";
+    const Run r = scratch.run({"--batch=in", "--output-dir=" + dir, shard});
+    BOOST_REQUIRE_EQUAL(r.code, 0);
+    const std::map<std::string, boost::property_tree::ptree> report =
+      read_report(scratch.work / dir / ("report-shard-" + std::to_string(i) + "-of-3.jsonl"));
+    std::set<std::string> expected;
+    for(std::size_t k = i - 1; k < names.size(); k += 3)
+      expected.insert("in/" + names[k]);
+    std::set<std::string> got;
+    for(const auto& line : report)
+      got.insert(line.first);
+    BOOST_TEST((got == expected), shard);
+    for(const std::string& input : got)
+    {
+      BOOST_TEST(seen.insert(input).second, input << " is in two slices");
+      const std::string obj = fs::path(input).stem().string() + "_uv.obj";
+      BOOST_TEST(Scratch::read_text(scratch.work / dir / obj) == Scratch::read_text(scratch.work / "all" / obj),
+                 obj << " differs from the unsharded run");
+    }
+  }
+  BOOST_TEST(seen.size() == names.size());
+
+  std::string list = "# the inputs, shuffled\n\n";
+  for(std::size_t k = names.size(); k-- > 0;)
+    list += "in/" + names[k] + "\n";
+  scratch.write("list.txt", list);
+  const Run listed = scratch.run({"--batch=list.txt", "--output-dir=listed", "--shard=2/3"});
+  BOOST_REQUIRE_EQUAL(listed.code, 0);
+  std::set<std::string> from_list;
+  for(const auto& line : read_report(scratch.work / "listed/report-shard-2-of-3.jsonl"))
+    from_list.insert(fs::path(line.first).filename().string());
+  BOOST_TEST((from_list == std::set<std::string>{names[1], names[4]}));
+
+  // the same list on stdin (--batch=-): relative paths from the working directory
+  scratch.standard_input = scratch.work / "list.txt";
+  const Run piped = scratch.run({"--batch=-", "--output-dir=piped", "--shard=3/3"});
+  scratch.standard_input.clear();
+  BOOST_REQUIRE_EQUAL(piped.code, 0);
+  std::set<std::string> from_stdin;
+  for(const auto& line : read_report(scratch.work / "piped/report-shard-3-of-3.jsonl"))
+    from_stdin.insert(fs::path(line.first).filename().string());
+  BOOST_TEST((from_stdin == std::set<std::string>{names[2], names[5]}));
+}
+
+// Wrong batch options: a specific message, exit status 2, no output folder.
+BOOST_AUTO_TEST_CASE(batch_option_errors)
+{
+  Scratch scratch;
+  write_generated_disks(scratch, "in", 1);
+  fs::create_directories(scratch.work / "empty");
+  const std::vector<std::pair<std::vector<std::string>, std::string> > cases = {
+    {{"--batch=missing", "--output-dir=out"}, "--batch=missing: no such folder or list file"},
+    {{"--batch=empty", "--output-dir=out"}, "--batch=empty: no input"},
+    {{"--batch=in", "--output-dir=out", "--shard=4/3"}, "slice 4 of 3 does not exist"},
+    {{"--batch=in", "--output-dir=out", "--shard=0/3"}, "bad value '0/3' of --shard"},
+    {{"--batch=in", "--output-dir=out", "--shard=2"}, "bad value '2' of --shard"},
+    {{"--batch=in", "--output-dir=out", "--jobs=0"}, "value 0 of --jobs is out of range"},
+    {{"--batch=in"}, "--batch needs --output-dir=DIR"},
+    {{"--output-dir=out", "--jobs=2"}, "option --output-dir is an option of the batch mode"},
+    {{"in/disk_0.off", "--force"}, "option --force is an option of the batch mode"},
+    {{"--batch=in", "--output-dir=out", "in/disk_0.off"}, "--batch takes no INPUT or OUTPUT argument"},
+    {{"--batch=in", "--output-dir=out", "--svg=x.svg"}, "option --svg names the file of one run"},
+    {{"--batch=in", "--output-dir=out", "--json"}, "option --json cannot be combined with --batch"},
+    {{"--batch=in", "--output-dir=in"}, "is the input folder"},
+    {{"--batch=in", "--output-dir=out", "--threads=300"}, "value 300 of --threads is out of range"}};
+  for(const auto& c : cases)
+  {
+    const Run r = scratch.run(c.first);
+    BOOST_TEST(r.code == 2, c.second);
+    BOOST_TEST(contains(r.err, c.second), "expected '" << c.second << "' in: " << r.err);
+    BOOST_TEST(!fs::exists(scratch.work / "out"), c.second);
+    BOOST_TEST(!fs::exists(scratch.work / "in/report.jsonl"));
+  }
+}
+
+// --threads=N sets the BLAS threads under CHOLMOD and, from 2 on, the package's own threads
+// (CGAL::Parallel_tag): the UVs do not depend on it.
+BOOST_AUTO_TEST_CASE(threads_give_the_same_uvs)
+{
+  Scratch scratch;
+  scratch.write("disk.off", off_text(mbp_test::bumpy_disk(14, 48)));
+#ifdef MBP_CLI_HAS_CHOLMOD
+  const std::string solver = "--solver=cholmod";
+#else
+  const std::string solver = "--solver=ldlt";
+#endif
+  std::vector<Obj> objs;
+  for(const std::string threads : {"", "--threads=1", "--threads=2", "--threads=0"})
+  {
+    std::vector<std::string> args{"disk.off", "out.obj", solver};
+    if(!threads.empty())
+      args.push_back(threads);
+    const Run r = scratch.run(args);
+    BOOST_REQUIRE_MESSAGE(r.code == 0, threads << ": " << r.err);
+    objs.push_back(read_obj(scratch.work / "out.obj"));
+  }
+  for(std::size_t k = 1; k < objs.size(); ++k)
+  {
+    BOOST_REQUIRE_EQUAL(objs[k].vt.size(), objs[0].vt.size());
+    double worst = 0.;
+    for(std::size_t i = 0; i < objs[0].vt.size(); ++i)
+      worst = (std::max)(worst, std::hypot(objs[k].vt[i][0] - objs[0].vt[i][0], objs[k].vt[i][1] - objs[0].vt[i][1]));
+    BOOST_TEST(worst <= 1e-12, "run " << k << ": largest UV difference from the default " << worst);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -260,7 +260,8 @@ BOOST_AUTO_TEST_CASE(a_sequential_call_starts_no_thread)
 #ifdef MBP_WITH_CHOLMOD
   {
     // CHOLMOD's OpenMP and a threaded BLAS under it may start threads of their own (the
-    // package does not change process-wide settings): the package's own threads are counted
+    // traits set the BLAS's thread count, not the package's threads): the package's own
+    // threads are counted
     typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<>, SMP::Cholmod_supernodal_cholesky_traits>
       Cholmod;
     UV_map uv = mbp_test::new_uv_map(m, "v:cholmod");
@@ -271,6 +272,62 @@ BOOST_AUTO_TEST_CASE(a_sequential_call_starts_no_thread)
   }
 #else
   BOOST_TEST_MESSAGE("CHOLMOD not available in this build: its sequential call not tested");
+#endif
+}
+
+// The BLAS threads (issue 24): Cholmod_supernodal_cholesky_traits sets OpenBLAS's thread count
+// before a factorization (blas_threads, default 1), or leaves it alone (0). Run when CMake
+// found that the BLAS under CHOLMOD is OpenBLAS (CGAL_SMP_USE_OPENBLAS_THREADS); skipped, with
+// the reason, otherwise.
+boost::test_tools::assertion_result blas_threads_are_set(boost::unit_test::test_unit_id)
+{
+  boost::test_tools::assertion_result r(false);
+#if defined(MBP_WITH_CHOLMOD) && defined(CGAL_SMP_USE_OPENBLAS_THREADS)
+  r = true;
+#elif defined(MBP_WITH_CHOLMOD)
+  r.message() << "the BLAS under CHOLMOD is not OpenBLAS in this build: the traits leave it alone";
+#else
+  r.message() << "CHOLMOD not available in this build";
+#endif
+  return r;
+}
+
+BOOST_AUTO_TEST_CASE(cholmod_traits_set_the_blas_threads, *boost::unit_test::precondition(blas_threads_are_set))
+{
+#if defined(MBP_WITH_CHOLMOD) && defined(CGAL_SMP_USE_OPENBLAS_THREADS)
+  typedef SMP::Cholmod_supernodal_cholesky_traits Cholmod;
+  BOOST_TEST(Cholmod::sets_blas_threads());
+  // a symmetric positive definite matrix (both triangles stored)
+  const int n = 2000;
+  Cholmod::Matrix A(n, n);
+  for(int i = 0; i < n; ++i)
+  {
+    A.set_coef(i, i, 4., true);
+    if(i > 0)
+    {
+      A.set_coef(i, i - 1, -1., true);
+      A.set_coef(i - 1, i, -1., true);
+    }
+  }
+  const int before = openblas_get_num_threads();
+  const auto factor_with = [&](const Cholmod& traits) {
+    Cholmod copy(traits);  // the parameterizers copy the traits they are given: so does this
+    BOOST_TEST(copy.blas_threads() == traits.blas_threads());
+    double D = 0.;
+    BOOST_REQUIRE(copy.factor(A, D));
+    return openblas_get_num_threads();
+  };
+  openblas_set_num_threads(2);
+  const int two = openblas_get_num_threads();  // 2, or fewer on a machine of one core
+  BOOST_TEST(Cholmod().blas_threads() == 1);
+  BOOST_TEST(factor_with(Cholmod()) == 1);     // the default: one thread
+  BOOST_TEST(factor_with(Cholmod(Cholmod::AMD, 0)) == 1);  // left alone
+  openblas_set_num_threads(2);
+  BOOST_TEST(factor_with(Cholmod(Cholmod::AMD, 0)) == two);  // left alone
+  BOOST_TEST(factor_with(SMP::Cholmod_nested_dissection_cholesky_traits(1)) == 1);
+  BOOST_TEST(factor_with(Cholmod(Cholmod::AMD, 2)) == two);
+  BOOST_TEST(Cholmod(Cholmod::AMD, -3).blas_threads() == 0);
+  openblas_set_num_threads(before);
 #endif
 }
 

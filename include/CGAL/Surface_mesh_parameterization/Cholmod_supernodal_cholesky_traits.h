@@ -26,6 +26,15 @@
 #include <memory>
 #include <vector>
 
+#ifdef CGAL_SMP_USE_OPENBLAS_THREADS
+// OpenBLAS's documented API (declared here rather than through its cblas.h, whose name and
+// contents differ between BLAS implementations). CGAL_SMP_USE_OPENBLAS_THREADS is defined by
+// the target MeasuredParameterization::Cholmod when CMake found that the BLAS under CHOLMOD is
+// OpenBLAS (cmake/MbpOpenblasThreads.cmake), and that target then links OpenBLAS.
+extern "C" void openblas_set_num_threads(int num_threads);
+extern "C" int openblas_get_num_threads(void);
+#endif
+
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
@@ -53,9 +62,19 @@ namespace Surface_mesh_parameterization {
 /// the object they are given once per system).
 ///
 /// CHOLMOD's supernodal factorization runs its dense blocks in the BLAS, which may be
-/// multithreaded (OpenBLAS starts a thread per core by default): this class never changes
-/// the BLAS's settings. Set them in your program (environment variable
-/// `OPENBLAS_NUM_THREADS`, or `openblas_set_num_threads()`).
+/// multithreaded (OpenBLAS starts a thread per core by default, and its threads spin: beside
+/// another busy program, they wait for each other). The traits set the BLAS's thread count
+/// before each factorization: `blas_threads` (default 1; 0 leaves the BLAS alone). Measured
+/// on 2 cores, the command line on a 714k-vertex disk (`benchmark/README.md`, section *BLAS
+/// threads and batches*): idle, 9.1-9.6 s with one BLAS thread against 8.3-8.5 s with
+/// OpenBLAS's default of one per core; beside a program that keeps both cores busy, 14 s
+/// against 61 s (with a third, unrelated build running too: 29 s against 60 s). The count is set with
+/// OpenBLAS's `openblas_set_num_threads()`, which is process-wide (it applies to every BLAS
+/// call of the program, from any thread), and only when CMake found that the BLAS linked by
+/// CHOLMOD is OpenBLAS (the target `MeasuredParameterization::Cholmod` then defines
+/// `CGAL_SMP_USE_OPENBLAS_THREADS`); with another BLAS the setting has no effect and the BLAS
+/// keeps its own settings (e.g. `OMP_NUM_THREADS`). The package's own threads are those of the
+/// parameterizers' `ConcurrencyTag`, independent of this setting.
 class Cholmod_supernodal_cholesky_traits
 {
 public:
@@ -78,21 +97,23 @@ public:
     SUITESPARSE_NESTED_DISSECTION
   };
 
-  /// creates traits with the given ordering.
-  explicit Cholmod_supernodal_cholesky_traits(Ordering ordering = AMD)
-    : m_state(std::make_unique<State>(ordering))
+  /// creates traits with the given ordering, whose factorizations set the BLAS to
+  /// `blas_threads` threads (0: the BLAS is left alone; negative values are taken as 0). The
+  /// setting applies only when the BLAS is OpenBLAS (`CGAL_SMP_USE_OPENBLAS_THREADS`).
+  explicit Cholmod_supernodal_cholesky_traits(Ordering ordering = AMD, int blas_threads = 1)
+    : m_state(std::make_unique<State>(ordering, blas_threads))
   { }
 
   /// creates traits with the settings of `other` and no factor.
   Cholmod_supernodal_cholesky_traits(const Cholmod_supernodal_cholesky_traits& other)
-    : m_state(std::make_unique<State>(other.ordering()))
+    : m_state(std::make_unique<State>(other.ordering(), other.blas_threads()))
   { }
 
   /// forgets the factor and takes the settings of `other`.
   Cholmod_supernodal_cholesky_traits& operator=(const Cholmod_supernodal_cholesky_traits& other)
   {
     if(this != &other)
-      m_state = std::make_unique<State>(other.ordering());
+      m_state = std::make_unique<State>(other.ordering(), other.blas_threads());
     return *this;
   }
 
@@ -103,6 +124,20 @@ public:
 
   /// the ordering.
   Ordering ordering() const { return m_state->ordering; }
+
+  /// the number of BLAS threads set before each factorization (0: the BLAS is left alone).
+  int blas_threads() const { return m_state->blas_threads; }
+
+  /// whether the BLAS's thread count is set by this class in this build (the BLAS under
+  /// CHOLMOD is OpenBLAS: `CGAL_SMP_USE_OPENBLAS_THREADS`).
+  static constexpr bool sets_blas_threads()
+  {
+#ifdef CGAL_SMP_USE_OPENBLAS_THREADS
+    return true;
+#else
+    return false;
+#endif
+  }
 
   /// factorizes `A` (symmetric positive definite; its lower triangle is read). Sets `D` to 1.
   /// Returns `false` when `A` is not positive definite or CHOLMOD fails.
@@ -150,7 +185,7 @@ public:
 private:
   struct State
   {
-    explicit State(Ordering o) : ordering(o)
+    State(Ordering o, int threads) : ordering(o), blas_threads(std::max(threads, 0))
     {
       cholmod_start(&common);
       common.nmethods = 1;
@@ -212,9 +247,20 @@ private:
         pattern_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.rows() + 1);
         pattern_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
       }
+      set_blas_threads();
       factorized = cholmod_factorize(&s, L, &common) != 0 && common.status == CHOLMOD_OK &&
                    L->minor == L->n;
       return factorized;
+    }
+
+    // The BLAS's thread count, before a factorization. Set only when it differs: OpenBLAS
+    // changes its thread pool under a lock, but a call that changes nothing touches nothing.
+    void set_blas_threads() const
+    {
+#ifdef CGAL_SMP_USE_OPENBLAS_THREADS
+      if(blas_threads > 0 && openblas_get_num_threads() != blas_threads)
+        openblas_set_num_threads(blas_threads);
+#endif
     }
 
     bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X)
@@ -239,6 +285,7 @@ private:
     }
 
     Ordering ordering;
+    int blas_threads;
     cholmod_common common;
     cholmod_factor* L = nullptr;
     bool factorized = false;
@@ -261,9 +308,10 @@ private:
 class Cholmod_nested_dissection_cholesky_traits : public Cholmod_supernodal_cholesky_traits
 {
 public:
-  /// creates traits with the ordering `NESTED_DISSECTION`.
-  Cholmod_nested_dissection_cholesky_traits()
-    : Cholmod_supernodal_cholesky_traits(NESTED_DISSECTION)
+  /// creates traits with the ordering `NESTED_DISSECTION` and `blas_threads` BLAS threads
+  /// (see `Cholmod_supernodal_cholesky_traits`).
+  explicit Cholmod_nested_dissection_cholesky_traits(int blas_threads = 1)
+    : Cholmod_supernodal_cholesky_traits(NESTED_DISSECTION, blas_threads)
   { }
 };
 

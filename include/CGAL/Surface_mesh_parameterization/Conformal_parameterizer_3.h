@@ -97,8 +97,9 @@ enum Repair
 /// \tparam ConcurrencyTag_ `CGAL::Sequential_tag` (default: no thread is started) or
 ///         `CGAL::Parallel_tag`: the border distance policy's `prepare()` step runs in a
 ///         second thread while the center is located, and multi-column solves split their
-///         columns over two threads. Results do not depend on it. The package never changes
-///         process-wide settings: a threaded BLAS under CHOLMOD uses its own threads.
+///         columns over two threads. Results do not depend on it. The BLAS's threads under
+///         CHOLMOD are not the package's: `Cholmod_supernodal_cholesky_traits` sets them
+///         (its `blas_threads`, one by default).
 template <class TriangleMesh_,
           class BorderPolicy_ = Automatic_border<>,
           class SolverTraits_ = Default,
