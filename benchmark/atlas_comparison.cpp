@@ -90,6 +90,8 @@
 // 0 overlaps, 0 UVs outside; time <= 0.2x xatlas's from 10000 polygons on; median utilization
 // >= xatlas's).
 
+#include "benchmark_support.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/enum.h>
@@ -1166,24 +1168,6 @@ struct Mesh_entry
   std::size_t polygons = 0, triangles = 0;
 };
 
-bool is_mesh_file(const fs::path& p)
-{
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl";
-}
-
-std::vector<fs::path> mesh_files(const std::string& dir)
-{
-  std::vector<fs::path> files;
-  std::error_code ec;
-  for(const auto& entry : fs::directory_iterator(dir, ec))
-    if(entry.is_regular_file() && is_mesh_file(entry.path()))
-      files.push_back(entry.path());
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 struct Options
 {
   std::vector<std::string> only, extra;
@@ -1227,7 +1211,7 @@ std::vector<Mesh_entry> list_meshes(const Options& o)
   for(const auto& [dir, atlas_folder] : folders)
   {
     std::cout << "\n" << (atlas_folder ? "Atlas meshes" : "Project meshes (non-disks kept)") << ": " << dir << "\n\n";
-    for(const fs::path& file : mesh_files(dir))
+    for(const fs::path& file : mbp_benchmark::mesh_files_in(dir))
       if(selected(o, file.filename().string()))
         consider(file, atlas_folder, meshes);
   }

@@ -12,6 +12,8 @@
 #ifndef MBP_BENCHMARK_SUPPORT_H
 #define MBP_BENCHMARK_SUPPORT_H
 
+#include "../cli/text_output.h"
+
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -45,9 +47,8 @@ inline std::vector<std::filesystem::path> mesh_files_in(const std::string& dir,
   std::error_code ec;
   for(const auto& entry : std::filesystem::directory_iterator(dir, ec))
   {
-    const std::string ext = entry.path().extension().string();
     const std::string name = entry.path().filename().string();
-    if((ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl") &&
+    if(mbp_cli::is_mesh_file_name(name) &&
        (only.empty() || std::find(only.begin(), only.end(), name) != only.end()))
       files.push_back(entry.path());
   }

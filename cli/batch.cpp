@@ -48,14 +48,6 @@ const int exit_usage = 2;
 
 // ------------------------------------------------------------------------------ the inputs
 
-bool is_mesh_file(const fs::path& path)
-{
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return extension == ".off" || extension == ".obj" || extension == ".ply" || extension == ".stl";
-}
-
 // The paths of a list (one a line; empty lines and lines starting with # skipped), relative
 // ones taken from `base`.
 std::vector<std::string> read_list(std::istream& in, const fs::path& base)
@@ -84,7 +76,7 @@ std::vector<std::string> list_inputs(const Batch_options& b, std::string& error)
   else if(fs::is_directory(b.source, ec))
   {
     for(const fs::directory_entry& e : fs::directory_iterator(b.source, ec))
-      if(!e.is_directory(ec) && is_mesh_file(e.path()))
+      if(!e.is_directory(ec) && is_mesh_file_name(e.path().string()))
         inputs.push_back(e.path().string());
     if(ec)
       error = "--batch=" + b.source + ": cannot list the folder: " + ec.message();
@@ -380,7 +372,7 @@ private:
   std::string prepare();
   void start(std::size_t k);
   void finish(pid_t pid, int status);
-  bool append(const std::string& line);
+  void append(const std::string& line);
   bool rewrite_report();
   void progress(bool last);
 
@@ -489,13 +481,12 @@ void Batch::finish(pid_t pid, int status)
 }
 
 // Appends a line to the report at once (an interrupted batch keeps it).
-bool Batch::append(const std::string& line)
+void Batch::append(const std::string& line)
 {
   std::ofstream out(m_report, std::ios::app | std::ios::binary);
   out << line << '\n';
   out.flush();
   m_report_ok = m_report_ok && out.good();
-  return out.good();
 }
 
 // The report rewritten: the last line of every mesh of this run in the order of the inputs,

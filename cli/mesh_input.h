@@ -61,15 +61,6 @@ struct Failure
   }
 };
 
-inline std::string lowercase_extension(const std::string& path)
-{
-  std::string ext = std::filesystem::path(path).extension().string();
-  if(!ext.empty())
-    ext.erase(0, 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 namespace detail {
 
 // Why the faces of `soup` do not form a polygon mesh, found after Euler::add_face refused
@@ -218,10 +209,9 @@ Failure build_mesh(Polygon_soup& soup, Mesh& mesh)
 /// the problem (the caller prefixes the file name).
 inline Failure read_soup_file(const std::string& path, Polygon_soup& soup)
 {
-  const std::string ext = lowercase_extension(path);
-  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+  if(!is_mesh_file_name(path))
     return detail::unsupported_extension(path);
-  return detail::read_soup(path, ext, soup);
+  return detail::read_soup(path, lowercase_extension(path), soup);
 }
 
 /// reads the polygon mesh of the file `path` (.off, .obj, .ply or .stl) with the streaming

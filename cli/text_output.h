@@ -13,16 +13,38 @@
 #ifndef MBP_CLI_TEXT_OUTPUT_H
 #define MBP_CLI_TEXT_OUTPUT_H
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace mbp_cli {
 
 /// the shortest decimal text that reads back as exactly `x` (full double precision).
+// The extension of `path` without its dot, lowercase ("a/b.OFF" -> "off").
+inline std::string lowercase_extension(const std::string& path)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  if(!ext.empty())
+    ext.erase(0, 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// Whether `path` has the extension of a mesh format the program reads: .off, .obj, .ply or
+// .stl, in any case. (The one list of the formats: the reader, the batch's folder listing
+// and the benchmarks' call this.)
+inline bool is_mesh_file_name(const std::string& path)
+{
+  const std::string ext = lowercase_extension(path);
+  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
+}
+
 inline std::string exact(double x)
 {
   char buffer[32];
