@@ -43,9 +43,10 @@ std::string summary_of_quality(const Quality& q)
 
 std::string candidate_kind(const SMP::Border_candidate& c, const std::string& distance)
 {
-  return c.family == SMP::CIRCLE      ? std::string("circle")
-         : c.family == SMP::CONFORMAL ? std::string("conformal")
-                                      : "measured:" + distance;
+  return c.family == SMP::CIRCLE              ? std::string("circle")
+         : c.family == SMP::CONFORMAL         ? std::string("conformal")
+         : c.family == SMP::CONFORMAL_LENGTHS ? std::string("conformal-lengths")
+                                              : "measured:" + distance;
 }
 
 std::string kept_border(const SMP::Parameterization_report& report, const std::string& distance)
