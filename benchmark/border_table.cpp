@@ -21,6 +21,7 @@
 //                       ../shared/peers/bff-command-line); --bff none: no BFF column
 //   --cross-check NAME  a mesh on which our circle is compared with CGAL's own DCP
 //                       (repeatable; default: snail.obj maxFace.obj lion-head.off mask.off)
+//   --method NAME       only this method (a name of the tables, e.g. "conformal L"; repeatable)
 //   --scale L           also bimba_i.obj refined L times by 1-to-4 midpoint subdivision
 //                       (levels 1..L; default 1; 0: none), timed like the other meshes but
 //                       kept out of the medians (no real disk reaches 45k vertices)
@@ -29,6 +30,8 @@
 // call is timed, the maps are prepared outside the timing, so SMP::parameterize()'s wrapper is
 // not counted):
 //   conformal    Conformal_parameterizer_3<Mesh, Conformal_border> (Eigen LDLT)
+//   conformal L  Conformal_parameterizer_3<Mesh, Conformal_length_border> (Eigen LDLT; issue 23:
+//                the conformal border with conformal lengths where it overlaps itself)
 //   auto         Conformal_parameterizer_3<Mesh, Automatic_border<Poisson_center_locator,
 //                Geodesic_border_distance<Fast_marching_geodesics>>>: the command line's
 //                default (one factorization)
@@ -74,6 +77,7 @@
 #include <CGAL/Surface_mesh_parameterization/Automatic_border.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border.h>
 #include <CGAL/Surface_mesh_parameterization/Conformal_border.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_length_border.h>
 #include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
@@ -133,6 +137,7 @@ typedef SMP::Geodesic_border_distance<SMP::Fast_marching_geodesics>       Fast_m
 typedef SMP::Automatic_border<SMP::Poisson_center_locator, Fast_marching_distance> Automatic;
 typedef SMP::Default_sparse_cholesky_traits                               Ldlt_traits;
 typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Conformal_border>       Ours_conformal;
+typedef SMP::Conformal_parameterizer_3<Mesh, SMP::Conformal_length_border> Ours_conformal_lengths;
 typedef SMP::Conformal_parameterizer_3<Mesh, Automatic>                   Ours_auto;
 typedef SMP::Conformal_parameterizer_3<Mesh>                              Ours_auto_poisson;  // Automatic_border<>
 typedef SMP::Measured_conformal_parameterizer_3<Mesh>                     Ours_mbppp;
@@ -152,12 +157,12 @@ namespace {
 // ---------------------------------------------------------------------------------------
 // Methods
 
-enum Method { CONFORMAL, AUTO, AUTO_POISSON, MBPPP, MBPGP, CIRCLE, LSCM, BFF, FLOOR,
+enum Method { CONFORMAL, CONFORMAL_LENGTHS, AUTO, AUTO_POISSON, MBPPP, MBPGP, CIRCLE, LSCM, BFF, FLOOR,
               CONFORMAL_CHOLMOD, AUTO_CHOLMOD, FLOOR_CHOLMOD, CGAL_DCP, NUMBER_OF_METHODS };
 
 const char* method_name(int m)
 {
-  static const char* names[NUMBER_OF_METHODS] = {"conformal", "auto", "auto P", "MBPPP", "MBPGP", "circle",
+  static const char* names[NUMBER_OF_METHODS] = {"conformal", "conformal L", "auto", "auto P", "MBPPP", "MBPGP", "circle",
                                                  "LSCM", "BFF", "floor", "conformal CHOLMOD", "auto CHOLMOD",
                                                  "floor CHOLMOD", "CGAL DCP"};
   return names[m];
@@ -178,8 +183,10 @@ struct Ours_info
 {
   int factorizations = 0, back_substitutions = 0;
   double factorization_seconds = 0., back_substitution_seconds = 0.;
-  int kept = -1;  // Border_family: 0 circle, 1 measured, 2 conformal
+  int kept = -1;  // Border_family: 0 circle, 1 measured, 2 conformal, 3 conformal lengths
   double blend = 0.;
+  double own_blend = 0.;       // the report's conformal_blend (conformal members)
+  double length_seconds = 0.;  // the report's conformal_length_seconds
   bool mean_value = false, repaired = false;
   std::size_t flips_before = 0;
   std::size_t tried = 0;
@@ -234,6 +241,8 @@ Sample run_ours(Mesh& mesh, halfedge_descriptor bhd, Maps& maps)
   i.back_substitution_seconds = r.statistics.back_substitution_seconds;
   i.kept = (r.chosen_candidate >= 0) ? static_cast<int>(r.kept_border) : -1;
   i.blend = r.blend;
+  i.own_blend = r.conformal_blend;
+  i.length_seconds = r.conformal_length_seconds;
   i.mean_value = r.mean_value_interior;
   i.repaired = r.repaired;
   i.flips_before = r.flipped_faces_before_repair;
@@ -536,6 +545,7 @@ struct Options
 {
   int runs = 3;
   std::vector<std::string> only;
+  std::vector<std::string> methods;  // --method: empty for all
   std::string bff;
   std::vector<std::string> cross_check = {"snail.obj", "maxFace.obj", "lion-head.off", "mask.off"};
   int scale = 1;
@@ -557,6 +567,7 @@ Sample run_method(int m, Mesh& mesh, halfedge_descriptor bhd, Maps& maps, const 
   switch(m)
   {
   case CONFORMAL:    return run_ours<Ours_conformal>(mesh, bhd, maps);
+  case CONFORMAL_LENGTHS: return run_ours<Ours_conformal_lengths>(mesh, bhd, maps);
   case AUTO:         return run_ours<Ours_auto>(mesh, bhd, maps);
   case AUTO_POISSON: return run_ours<Ours_auto_poisson>(mesh, bhd, maps);
   case MBPPP:        return run_ours<Ours_mbppp>(mesh, bhd, maps);
@@ -629,7 +640,9 @@ bool run_mesh(Mesh& mesh, Row& row, const Options& options, const std::string& t
   const bool with_bff = !options.bff.empty() && write_obj(mesh, obj_in);
   std::vector<int> methods;
   for(int m = 0; m < NUMBER_OF_METHODS; ++m)
-    if(method_available(m) && (m != BFF || with_bff) && (m != CGAL_DCP || cross_check))
+    if(method_available(m) && (m != BFF || with_bff) && (m != CGAL_DCP || cross_check) &&
+       (options.methods.empty() ||
+        std::find(options.methods.begin(), options.methods.end(), method_name(m)) != options.methods.end()))
       methods.push_back(m);
 
   for(int run = 0; run < options.runs; ++run)
@@ -745,6 +758,7 @@ const char* family_name(int f)
   case 0: return "circle";
   case 1: return "measured";
   case 2: return "conformal";
+  case 3: return "conformal-lengths";
   default: return "none";
   }
 }
@@ -761,7 +775,7 @@ std::string kept(const Result& r)
   return s;
 }
 
-const int distortion_columns[] = {CIRCLE, CONFORMAL, AUTO, AUTO_POISSON, MBPPP, MBPGP, LSCM, BFF};
+const int distortion_columns[] = {CIRCLE, CONFORMAL, CONFORMAL_LENGTHS, AUTO, AUTO_POISSON, MBPPP, MBPGP, LSCM, BFF};
 
 void print_distortion_table(const std::vector<Row>& rows, bool l2)
 {
@@ -828,6 +842,49 @@ void print_flips_table(const std::vector<Row>& rows)
     std::printf("\n");
   }
   std::printf("\n");
+}
+
+// One member's cells: kept blend, angle distortion, L2 stretch, area distortion (mean, max), flips.
+std::string member_cells(const Result& r)
+{
+  if(!ok(r))
+    return std::string(r.ran ? "failed" : "-") + " | - | - | - | - | -";
+  return fixed(r.info.blend, 3) + " | " + cell(r, r.quality.angle_distortion) + " | " + fixed(r.quality.l2_stretch, 3) +
+         " | " + fixed(r.quality.area_distortion_mean, 3) + " | " + fixed(r.quality.area_distortion_max, 2) + " | " +
+         flips_cell(r, true);
+}
+
+// Issue 23: the conformal member (its smallest valid blend, lengths kept) against the
+// conformal-length member (its own blend: the smallest at which its polygon is simple), with the
+// time of that member's data (the extra factorization, one solve, its bisection) against that of
+// the factorization of L_II, and the factorization time of the member's whole call (both).
+void print_conformal_lengths_table(const std::vector<Row>& rows)
+{
+  std::printf("| mesh | V | conformal: t | angle | L2 | area mean | area max | flips / 1-1 | conformal L: own t | t |"
+              " angle | L2 | area mean | area max | flips / 1-1 | angle L / conformal | L member s | factor. s: L_II, both |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<double> angle_ratio, time_ratio_of, angle_c, angle_l, l2_c, l2_l;
+  for(const Row& row : rows)
+  {
+    const Result &c = row.r[CONFORMAL], &l = row.r[CONFORMAL_LENGTHS];
+    if(!l.ran)
+      continue;
+    const double q = ratio(angle(l), angle(c)), t = time_ratio(l.info.length_seconds, c.info.factorization_seconds);
+    std::printf("| %s | %zu | %s | %s | %s | %s | %s | %s |\n", row.name.c_str(), row.vertices, member_cells(c).c_str(),
+                fixed(l.info.own_blend, 3).c_str(), member_cells(l).c_str(), fixed(q, 3).c_str(),
+                seconds(l.info.length_seconds).c_str(),
+                (seconds(c.info.factorization_seconds) + ", " + seconds(l.info.factorization_seconds)).c_str());
+    angle_ratio.push_back(q);
+    time_ratio_of.push_back(t);
+    angle_c.push_back(angle(c));
+    angle_l.push_back(angle(l));
+    l2_c.push_back(ok(c) ? c.quality.l2_stretch : std::numeric_limits<double>::quiet_NaN());
+    l2_l.push_back(ok(l) ? l.quality.l2_stretch : std::numeric_limits<double>::quiet_NaN());
+  }
+  std::printf("\nMedians over the disks: angle distortion conformal %s, conformal L %s (ratio %s); L2 stretch"
+              " conformal %s, conformal L %s; time of the conformal-length member / factorization of L_II %s\n\n",
+              figure(median(angle_c)).c_str(), figure(median(angle_l)).c_str(), fixed(median(angle_ratio), 3).c_str(),
+              fixed(median(l2_c), 3).c_str(), fixed(median(l2_l), 3).c_str(), fixed(median(time_ratio_of), 2).c_str());
 }
 
 void print_choice_table(const std::vector<Row>& rows)
@@ -1035,7 +1092,7 @@ void print_summary(const std::vector<Row>& all)
 
   for(int m : {AUTO, AUTO_POISSON})
   {
-    int wins[3] = {0, 0, 0}, blended = 0, mean_value = 0;
+    int wins[4] = {0, 0, 0, 0}, blended = 0, mean_value = 0;
     for(const Row& row : rows)
     {
       const Result& r = row.r[static_cast<std::size_t>(m)];
@@ -1189,6 +1246,8 @@ int main(int argc, char** argv)
       first = false;
       options.cross_check.push_back(argv[++i]);
     }
+    else if(a == "--method" && i + 1 < argc)
+      options.methods.push_back(argv[++i]);
     else if(a == "--scale" && i + 1 < argc)
       options.scale = (std::max)(0, std::atoi(argv[++i]));
     else if(!a.empty() && a[0] != '-')
@@ -1196,7 +1255,7 @@ int main(int argc, char** argv)
     else
     {
       std::fprintf(stderr, "usage: %s [--runs N] [--mesh NAME]... [--bff PATH|none] [--cross-check NAME]..."
-                           " [--scale L] [MESH_DIR]\n", argv[0]);
+                           " [--method NAME]... [--scale L] [MESH_DIR]\n", argv[0]);
       return 1;
     }
   }
@@ -1292,6 +1351,9 @@ int main(int argc, char** argv)
   print_flips_table(real);
   std::printf("## What the automatic border kept\n\n");
   print_choice_table(real);
+  std::printf("## Conformal lengths (issue 23): the conformal border's blend (lengths kept) against the"
+              " conformal-length member (its own blend)\n\n");
+  print_conformal_lengths_table(real);
   std::printf("## Time (seconds, median of %d interleaved runs; BFF: the whole process)\n\n", options.runs);
   print_time_table(real);
 #ifdef MBP_WITH_CHOLMOD

@@ -1000,6 +1000,7 @@ const char* family_name(int kept)
   case SMP::CIRCLE: return "circle";
   case SMP::MEASURED: return "measured";
   case SMP::CONFORMAL: return "conformal";
+  case SMP::CONFORMAL_LENGTHS: return "conformal-lengths";
   default: return "-";
   }
 }

@@ -582,7 +582,9 @@ void auto_table(std::vector<Mesh_entry>& meshes, int runs)
       else if(a.first.chosen_family == 0)
         chosen = "circle";
       else
-        chosen = std::string(a.first.chosen_family == 1 ? "measured" : "conformal") +
+        chosen = std::string(a.first.chosen_family == 1   ? "measured"
+                             : a.first.chosen_family == 2 ? "conformal"
+                                                          : "conformal-lengths") +
                  " t=" + fmt("%.3f", a.first.chosen_blend);
     }
     const double ratio = angle(a) / angle(r[CIRCLE]);

@@ -178,6 +178,7 @@ void write_times(Json_writer& j, const SMP::Parameterization_report& r)
      .member("distances", r.distance_seconds)
      .member("border_map", r.border_map_seconds)
      .member("conformal_border", r.conformal_border_seconds)
+     .member("conformal_lengths", r.conformal_length_seconds)  // --border=conformal-lengths
      .member("interior", r.interior_seconds)  // every layout tried before repair
      .member("output", r.output_seconds)
      .member("total", r.total_seconds)

@@ -25,7 +25,8 @@ const char* const usage_synopsis =
     "                                 [--output=FILE] [--svg=FILE] [--json] [--help]\n"
     "       measured_parameterization [INPUT] [OUTPUT.obj] --single-chart [--seams=FILE.selection.txt]\n"
     "                                 [--center=poisson|geodesic[:METHOD]|vertex:N]\n"
-    "                                 [--distance=poisson|METHOD|straightest] [--border=auto|conformal|measured|circle]\n"
+    "                                 [--distance=poisson|METHOD|straightest]\n"
+    "                                 [--border=auto|conformal|conformal-lengths|measured|circle]\n"
     "                                 [--solver=cholmod|cholmod-nd|ldlt] [--output=FILE] [--svg=FILE] [--json]\n"
     "                                 [--write-seams=FILE.selection.txt]\n"
     "                                 [--no-repair] [--help]\n"
@@ -120,6 +121,10 @@ const char* const usage_options =
     "                     it, --json lists every candidate\n"
     "  --border=conformal the conformal border (Boundary First Flattening's border with\n"
     "                     boundary scale factors 0): near-conformal, one factorization\n"
+    "  --border=conformal-lengths\n"
+    "                     the conformal border, or where it overlaps itself its blend toward\n"
+    "                     the circle with conformal lengths (one more factorization; can crush\n"
+    "                     limbs: not tried by auto)\n"
     "  --border=measured  the paper's measured border at the --distance distances\n"
     "  --border=circle    CGAL's circle with arc-length angles\n"
     "  --solver=NAME      sparse Cholesky factorization: cholmod (CHOLMOD supernodal, AMD\n"
@@ -243,13 +248,13 @@ std::string set_distance(const std::string& value, Options& o)
 
 std::string set_border(const std::string& value, Options& o)
 {
-  for(Border b : {Border::automatic, Border::conformal, Border::measured, Border::circle})
+  for(Border b : {Border::automatic, Border::conformal, Border::conformal_lengths, Border::measured, Border::circle})
     if(value == border_name(b))
     {
       o.border = b;
       return std::string();
     }
-  return "unknown value '" + value + "' of --border (expected auto, conformal, measured or circle)";
+  return "unknown value '" + value + "' of --border (expected auto, conformal, conformal-lengths, measured or circle)";
 }
 
 std::string set_solver(const std::string& value, Options& o)
@@ -522,8 +527,11 @@ const char* solver_name(Solver s)
 
 const char* border_name(Border b)
 {
-  return b == Border::conformal ? "conformal" : b == Border::measured ? "measured"
-         : b == Border::circle  ? "circle"    : "auto";
+  return b == Border::conformal           ? "conformal"
+         : b == Border::conformal_lengths ? "conformal-lengths"
+         : b == Border::measured          ? "measured"
+         : b == Border::circle            ? "circle"
+                                          : "auto";
 }
 
 const char* mode_name(Mode m)

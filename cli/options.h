@@ -22,7 +22,7 @@ namespace mbp_cli {
 enum class Solver { ldlt, cholmod, cholmod_nd };
 
 /// the border the run lays out (`--border=`)
-enum class Border { automatic, conformal, measured, circle };
+enum class Border { automatic, conformal, conformal_lengths, measured, circle };
 
 /// what the run makes: a packed texture atlas of any polygon soup (`--atlas`, the default), or
 /// the single-chart parameterization of a triangle mesh (`--single-chart`, implied by the

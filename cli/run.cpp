@@ -14,7 +14,7 @@
 // A single chart (--single-chart): the mesh is a CGAL::Surface_mesh; a mesh that is not a
 // disk is cut along seams (a CGAL::Seam_mesh over it) and parameterized with
 // Conformal_parameterizer_3, for the solver traits of --solver and the border policy of
-// --border (Automatic_border, Conformal_border, Measured_border or Circular_border, chosen at
+// --border (Automatic_border, Conformal_border, Conformal_length_border, Measured_border or Circular_border, chosen at
 // run time among the instantiated policies); the helpers mesh_input.h and seam_selection.h
 // read and check the mesh and the seams.
 
@@ -23,6 +23,7 @@
 #include <CGAL/boost/graph/Seam_mesh.h>
 
 #include <CGAL/Surface_mesh_parameterization/Atlas_report.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_length_border.h>
 #include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Disk_seams_report.h>
@@ -264,6 +265,8 @@ SMP::Parameterization_report parameterize_with_solver(Context<TriangleMesh>& c, 
   {
   case mbp_cli::Border::conformal:
     return parameterize_with(c, SMP::Conformal_border(), traits);
+  case mbp_cli::Border::conformal_lengths:
+    return parameterize_with(c, SMP::Conformal_length_border(), traits);
   case mbp_cli::Border::circle:
     return parameterize_with(c, SMP::Circular_border(), traits);
   case mbp_cli::Border::measured:

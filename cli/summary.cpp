@@ -43,9 +43,10 @@ std::string summary_of_quality(const Quality& q)
 
 std::string candidate_kind(const SMP::Border_candidate& c, const std::string& distance)
 {
-  return c.family == SMP::CIRCLE      ? std::string("circle")
-         : c.family == SMP::CONFORMAL ? std::string("conformal")
-                                      : "measured:" + distance;
+  return c.family == SMP::CIRCLE              ? std::string("circle")
+         : c.family == SMP::CONFORMAL         ? std::string("conformal")
+         : c.family == SMP::CONFORMAL_LENGTHS ? std::string("conformal-lengths")
+                                              : "measured:" + distance;
 }
 
 std::string kept_border(const SMP::Parameterization_report& report, const std::string& distance)
@@ -140,6 +141,8 @@ std::string summary_line(const Run_facts& f)
          " | seconds: preparation " + rounded(r.preparation_seconds, 3) + ", center " +
          rounded(r.center_seconds, 3) + ", distances " + rounded(r.distance_seconds, 3) + ", border map " +
          rounded(r.border_map_seconds, 3) + ", conformal border " + rounded(r.conformal_border_seconds, 3) +
+         (o.border == Border::conformal_lengths ? ", conformal lengths " + rounded(r.conformal_length_seconds, 3)
+                                                : std::string()) +
          ", layouts " + rounded(r.interior_seconds, 3) + ", total " + rounded(r.total_seconds, 3) + " | " +
          solver_name(o.solver) + ": " + std::to_string(r.statistics.factorizations) + " factorizations, " +
          std::to_string(r.statistics.back_substitutions) + " back-substitutions" +

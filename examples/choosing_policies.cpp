@@ -139,7 +139,7 @@ int main(int argc, char** argv)
   if(report.status != SMP::OK)
     return EXIT_FAILURE;
   // every layout tried by the automatic border, in the order tried, and the kept one
-  const char* family_names[] = {"circle", "measured", "conformal"};
+  const char* family_names[] = {"circle", "measured", "conformal", "conformal-lengths"};
   for(std::size_t i = 0; i < report.border_candidates.size(); ++i)
   {
     const SMP::Border_candidate& c = report.border_candidates[i];

@@ -645,6 +645,15 @@ BOOST_AUTO_TEST_CASE(automatic_border)
     const double d = oj.get<double>("quality.angle_distortion");
     BOOST_TEST(std::abs(d - (b == "circle" ? circle : conformal)) <= 1e-9 * d + 1e-15);
   }
+  // --border=conformal-lengths: where the conformal polygon is simple (here), the conformal
+  // border itself, after one more factorization (the whole cotangent Laplacian's)
+  const Run cl = scratch.run({path, "conformal-lengths.obj", "--json", "--border=conformal-lengths"});
+  BOOST_REQUIRE_EQUAL(cl.code, 0);
+  const boost::property_tree::ptree clj = parse_json(cl.out);
+  BOOST_TEST(clj.get<int>("statistics.factorizations") == 2);
+  BOOST_TEST(clj.get<std::string>("border_choice.chosen.kind") == "conformal-lengths");
+  BOOST_TEST(std::abs(clj.get<double>("quality.angle_distortion") - conformal) <= 1e-9 * conformal + 1e-15);
+  BOOST_TEST(clj.get<double>("times.conformal_lengths") > 0.);
   // the summary names the kept border; the OBJ says how it was chosen
   const Run t = scratch.run({path, "text.obj", "--single-chart"});
   BOOST_REQUIRE_EQUAL(t.code, 0);

@@ -12,7 +12,10 @@
 // planar non-star-shaped disks reproduced exactly, a developable patch unrolled exactly, the
 // turning angles recomputed from a dense cotangent Laplacian assembled here, the closing
 // step against a dense solution of its least-squares problem, the sign of the correction,
-// the blend of a self-overlapping border, and CGAL's DCP with the drop-in border.
+// the blend of a self-overlapping border, and CGAL's DCP with the drop-in border; the
+// conformal-length member (Conformal_length_border, issue 23): its scale factors against a dense
+// solve, the conformal border at blend 0, the circle's turning angles and a near-conformal
+// layout at blend 1.
 
 #include <boost/test/unit_test.hpp>
 
@@ -32,10 +35,14 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <CGAL/Surface_mesh_parameterization/Conformal_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_length_border.h>
 #include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Geodesic_border_distance.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
+#include <CGAL/Surface_mesh_parameterization/internal/borders/border_members.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/conformal_border.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/disk.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
 #include <CGAL/Surface_mesh_parameterization/measure_quality.h>
 
@@ -64,6 +71,8 @@ typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<doub
 typedef SMP::Conformal_border_parameterizer_3<Mesh>             Border;
 typedef mbp_test::Reporting_border<Border>                      Reporting_border;
 typedef SMP::Parameterization_report                            Report;
+typedef SMP::internal::Disk<Mesh, SMP::Default_sparse_cholesky_traits> Disk;
+typedef SMP::internal::Conformal_border_data                    Conformal_data;
 
 namespace {
 
@@ -204,12 +213,13 @@ std::vector<Eigen::Vector2d> eigen_polygon(const std::vector<std::array<double, 
   return p;
 }
 
-// The turning angles k - L_BI L_II^-1 Omega computed here from a dense cotangent Laplacian.
-std::vector<double> dense_turning_angles(const Mesh& m, halfedge_descriptor bhd)
+// The dense cotangent Laplacian L = D - W of the mesh (w_ij = (cot a + cot b) / 2, the
+// corners opposite edge ij) and the angle sums of the vertices, computed here.
+void dense_laplacian(const Mesh& m, Eigen::MatrixXd& L, std::vector<double>& sums)
 {
   const std::size_t n = num_vertices(m);
-  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
-  std::vector<double> sums(n, 0.);
+  L = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
+  sums.assign(n, 0.);
   for(auto f : faces(m))
   {
     std::vector<vertex_descriptor> t;
@@ -229,6 +239,15 @@ std::vector<double> dense_turning_angles(const Mesh& m, halfedge_descriptor bhd)
       L(j, j) += w;
     }
   }
+}
+
+// The turning angles k - L_BI L_II^-1 Omega computed here from a dense cotangent Laplacian.
+std::vector<double> dense_turning_angles(const Mesh& m, halfedge_descriptor bhd)
+{
+  const std::size_t n = num_vertices(m);
+  Eigen::MatrixXd L;
+  std::vector<double> sums;
+  dense_laplacian(m, L, sums);
   std::vector<vertex_descriptor> border;
   std::vector<bool> on_border(n, false);
   for(auto h : halfedges_around_face(bhd, m))
@@ -260,6 +279,24 @@ std::vector<double> dense_turning_angles(const Mesh& m, halfedge_descriptor bhd)
   return turning;
 }
 
+// The conformal-length member's data on `disk` built on `m`'s longest border: the conformal
+// border's data and the scale factors u_B.
+void length_member(Mesh& m, Disk& disk, Conformal_data& data, std::vector<double>& scale)
+{
+  BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
+  BOOST_REQUIRE_EQUAL(SMP::internal::conformal_border_data(disk, data), SMP::OK);
+  BOOST_REQUIRE_EQUAL(SMP::internal::conformal_length_data(disk, data, scale), SMP::OK);
+  BOOST_REQUIRE_EQUAL(scale.size(), disk.border().size());
+}
+
+double largest_distance(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b)
+{
+  double d = (a.size() == b.size()) ? 0. : std::numeric_limits<double>::infinity();
+  for(std::size_t k = 0; k < a.size() && k < b.size(); ++k)
+    d = (std::max)(d, (a[k] - b[k]).norm());
+  return d;
+}
+
 // A border parameterizer that places given UVs (a test double for CGAL's DCP).
 struct Given_border
 {
@@ -277,6 +314,24 @@ struct Given_border
   }
   bool is_border_convex() const { return false; }
 };
+
+// The angle distortion of CGAL's DCP (sparse LU) with the border polygon `polygon` (in the
+// disk's border order); `flips` gets its flipped faces, `one_to_one` whether it is one-to-one.
+double dcp_with_border(Mesh& m, const Disk& disk, const std::vector<Eigen::Vector2d>& polygon, const std::string& name,
+                       std::size_t& flips, bool& one_to_one)
+{
+  Given_border given;
+  for(int b : disk.border())
+    given.vertices.push_back(disk.vertex(std::size_t(b)));
+  given.uv = polygon;
+  UV_map uv = mbp_test::new_uv_map(m, name);
+  SMP::Discrete_conformal_map_parameterizer_3<Mesh, Given_border, LU> dcp(given);
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, dcp, mbp_test::longest_border(m), uv), SMP::OK);
+  const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
+  flips = q.flipped_faces;
+  one_to_one = SMP::is_one_to_one_uv_map(m, faces(m), uv);
+  return q.angle_distortion;
+}
 
 } // namespace
 
@@ -680,6 +735,175 @@ std::vector<std::string> real_disks()
 }
 
 } // namespace
+
+// ================================================================ the conformal-length member
+
+BOOST_AUTO_TEST_CASE(conformal_length_scale_factors_against_a_dense_solve)
+{
+  // L u = [Omega_I ; k_B - c] solved here densely, pinned at the center (the package pins its
+  // first border vertex), the mean removed
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk(5, 16));
+  Disk disk;
+  Conformal_data data;
+  std::vector<double> scale;
+  length_member(m, disk, data, scale);
+  Eigen::MatrixXd L;
+  std::vector<double> sums;
+  dense_laplacian(m, L, sums);
+  const std::size_t n = num_vertices(m), mb = disk.border().size();
+  std::vector<std::size_t> border;
+  for(int b : disk.border())
+    border.push_back(std::size_t(disk.vertex(std::size_t(b))));
+  std::vector<double> lengths(mb);
+  double total = 0.;
+  for(std::size_t k = 0; k < mb; ++k)
+    total += lengths[k] = std::sqrt(CGAL::squared_distance(m.point(vertex_descriptor(Mesh::size_type(border[k]))),
+                                                           m.point(vertex_descriptor(Mesh::size_type(border[(k + 1) % mb])))));
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(Eigen::Index(n));
+  for(std::size_t i = 0; i < n; ++i)
+    f[Eigen::Index(i)] = 2. * CGAL_PI - sums[i];
+  for(std::size_t k = 0; k < mb; ++k)
+    f[Eigen::Index(border[k])] = CGAL_PI - sums[border[k]] - CGAL_PI * (lengths[(k + mb - 1) % mb] + lengths[k]) / total;
+  BOOST_TEST(std::abs(f.sum()) <= 1e-10);  // discrete Gauss-Bonnet
+  const Eigen::Index pin = 0, r = Eigen::Index(n) - 1;  // vertex 0: the center, interior
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(Eigen::Index(n));
+  u.tail(r) = L.bottomRightCorner(r, r).ldlt().solve(f.tail(r));
+  BOOST_TEST(std::abs(L.row(pin).dot(u) - f[pin]) <= 1e-9);  // the pinned row holds too
+  u.array() -= u.mean();
+  double worst = 0., span = 0.;
+  for(std::size_t k = 0; k < mb; ++k)
+  {
+    worst = (std::max)(worst, std::abs(scale[k] - u[Eigen::Index(border[k])]));
+    span = (std::max)(span, std::abs(scale[k] - scale[0]));
+  }
+  BOOST_TEST_MESSAGE("scale factors: largest difference to the dense solve " << worst << ", span " << span);
+  BOOST_TEST(worst <= 1e-10);
+  BOOST_TEST(span > 1e-2);  // a curved, elongated disk: the factors matter
+}
+
+BOOST_AUTO_TEST_CASE(conformal_length_member_at_blend_zero_is_the_conformal_border)
+{
+  for(const auto& named : {std::make_pair(std::string("bumpy disk"), mbp_test::bumpy_disk()),
+                           std::make_pair(std::string("spiral ramp"), spiral_ramp())})
+  {
+    BOOST_TEST_CONTEXT(named.first)
+    {
+      Mesh m = mbp_test::make_mesh<Mesh>(named.second);
+      Disk disk;
+      Conformal_data data;
+      std::vector<double> scale;
+      length_member(m, disk, data, scale);
+      std::vector<Eigen::Vector2d> ours, conformal, half, kept;
+      BOOST_REQUIRE(SMP::internal::conformal_length_polygon(data, scale, 0., ours) == SMP::OK);
+      BOOST_REQUIRE(SMP::internal::polygon_from_turning_angles(data.turning, data.lengths, conformal) == SMP::OK);
+      BOOST_TEST(largest_distance(ours, conformal) <= 1e-12);
+      // at t > 0 the lengths differ from the kept ones: another polygon
+      BOOST_REQUIRE(SMP::internal::conformal_length_polygon(data, scale, 0.5, half) == SMP::OK);
+      BOOST_REQUIRE(SMP::internal::polygon_from_turning_angles(SMP::internal::blended_turning_angles(data, 0.5),
+                                                               data.lengths, kept) == SMP::OK);
+      BOOST_TEST(largest_distance(half, kept) > 1e-3);
+    }
+  }
+  // where the conformal border is simple, the policy gives the conformal border's map
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
+  UV_map conformal = mbp_test::new_uv_map(m, "v:conformal"), lengths = mbp_test::new_uv_map(m, "v:lengths");
+  Report report;
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, conformal), SMP::OK);
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_length_border>(m, lengths, &report), SMP::OK);
+  BOOST_TEST(report.kept_border == SMP::CONFORMAL_LENGTHS);
+  BOOST_TEST(report.conformal_blend == 0.);
+  BOOST_TEST(report.blend == 0.);
+  BOOST_TEST(report.statistics.factorizations == 2);  // L_II and the grounded L
+  BOOST_TEST(report.scale_factors.size() == report.edge_lengths.size());
+  double worst = 0.;
+  for(vertex_descriptor v : vertices(m))
+    worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(conformal[v], lengths[v])));
+  BOOST_TEST(worst <= 1e-12);
+}
+
+BOOST_AUTO_TEST_CASE(conformal_length_member_starts_at_its_smallest_simple_blend)
+{
+  // the spiral ramp's conformal border overlaps itself: the member's own blend is the smallest
+  // (to 2^-20) at which its polygon is simple
+  Mesh m = mbp_test::make_mesh<Mesh>(spiral_ramp());
+  Disk disk;
+  BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
+  SMP::internal::Border_members members(disk);
+  std::vector<Eigen::Vector2d> polygon, uv;
+  std::vector<double> closed;
+  BOOST_REQUIRE_EQUAL(members.add_conformal_lengths(disk, polygon, closed), SMP::OK);
+  BOOST_REQUIRE(members.has(SMP::CONFORMAL_LENGTHS));
+  BOOST_REQUIRE(members.has(SMP::CONFORMAL));
+  const double t = members.own_blend(SMP::CONFORMAL_LENGTHS);
+  BOOST_TEST_MESSAGE("spiral ramp: own blend, conformal " << members.own_blend(SMP::CONFORMAL) << ", conformal lengths " << t);
+  BOOST_TEST(t > 0.);
+  BOOST_TEST(t <= 1.);
+  BOOST_REQUIRE(members.border(SMP::CONFORMAL_LENGTHS, t, uv));
+  BOOST_TEST(largest_distance(uv, polygon) == 0.);
+  BOOST_TEST(!members.border(SMP::CONFORMAL_LENGTHS, t - std::ldexp(1., -20), uv));
+  // the complete parameterizer keeps a one-to-one layout of the member
+  UV_map map = mbp_test::new_uv_map(m, "v:uv");
+  Report report;
+  BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_length_border>(m, map, &report), SMP::OK);
+  BOOST_TEST(report.kept_border == SMP::CONFORMAL_LENGTHS);
+  BOOST_TEST(report.conformal_blend == t);
+  BOOST_TEST(report.blend >= t);
+  BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), map));
+}
+
+BOOST_AUTO_TEST_CASE(conformal_length_member_at_blend_one_turns_as_the_circle_and_is_near_conformal)
+{
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk(8, 24));
+  Disk disk;
+  Conformal_data data;
+  std::vector<double> scale;
+  length_member(m, disk, data, scale);
+  std::vector<Eigen::Vector2d> ours, kept, opposite;
+  BOOST_REQUIRE(SMP::internal::conformal_length_polygon(data, scale, 1., ours) == SMP::OK);
+  // the turning angles of the polygon (clockwise) are the circle's
+  const std::size_t mb = ours.size();
+  double worst = 0.;
+  for(std::size_t k = 0; k < mb; ++k)
+  {
+    const Eigen::Vector2d a = ours[k] - ours[(k + mb - 1) % mb], b = ours[(k + 1) % mb] - ours[k];
+    const double turn = -std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    worst = (std::max)(worst, std::abs(turn - data.circle[k]));
+  }
+  BOOST_TEST(worst <= 1e-9);
+  // the length-kept blend at t = 1 (the arc-length circle), and the opposite sign exp(+u)
+  BOOST_REQUIRE(SMP::internal::polygon_from_turning_angles(SMP::internal::blended_turning_angles(data, 1.),
+                                                           data.lengths, kept) == SMP::OK);
+  std::vector<double> negated(scale);
+  for(double& x : negated)
+    x = -x;
+  BOOST_REQUIRE(SMP::internal::conformal_length_polygon(data, negated, 1., opposite) == SMP::OK);
+  std::size_t flips = 0, kept_flips = 0, opposite_flips = 0;
+  bool one_to_one = false, other = false;
+  const double a = dcp_with_border(m, disk, ours, "v:ours", flips, one_to_one);
+  const double k = dcp_with_border(m, disk, kept, "v:kept", kept_flips, other);
+  const double o = dcp_with_border(m, disk, opposite, "v:opposite", opposite_flips, other);
+  BOOST_TEST_MESSAGE("angle distortion at t = 1: conformal lengths exp(-u) " << a << ", lengths kept " << k
+                     << ", exp(+u) " << o << " (" << opposite_flips << " flips)");
+  BOOST_TEST(flips == 0u);
+  BOOST_TEST(one_to_one);
+  BOOST_TEST(10. * a < k);
+  BOOST_TEST(10. * a < o);
+}
+
+BOOST_AUTO_TEST_CASE(conformal_length_scale_factors_vanish_on_a_planar_regular_disk)
+{
+  // a planar disk whose border is a regular polygon: Omega = 0 inside and k = c on the border,
+  // so u = 0 (the member is the conformal border, i.e. the disk itself, at every blend)
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(6, 20));
+  Disk disk;
+  Conformal_data data;
+  std::vector<double> scale;
+  length_member(m, disk, data, scale);
+  double largest = 0.;
+  for(double x : scale)
+    largest = (std::max)(largest, std::abs(x));
+  BOOST_TEST(largest <= 1e-10);
+}
 
 BOOST_AUTO_TEST_CASE(real_disks_automatic_border, MBP_EXTENDED_TIER)
 {

@@ -28,6 +28,7 @@ the package. Users choose among the models and configure them.
 
 \cgalHasModel `CGAL::Surface_mesh_parameterization::Circular_border`
 \cgalHasModel `CGAL::Surface_mesh_parameterization::Conformal_border`
+\cgalHasModel `CGAL::Surface_mesh_parameterization::Conformal_length_border`
 \cgalHasModel `CGAL::Surface_mesh_parameterization::Measured_border<CenterLocator, BorderDistance>`
 \cgalHasModel `CGAL::Surface_mesh_parameterization::Automatic_border<CenterLocator, BorderDistance>` (not for `Border_parameterizer_3`)
 */

@@ -38,8 +38,8 @@ namespace Surface_mesh_parameterization {
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
 ///
 /// A border parameterizer that lays out the border of a disk-like mesh with a border policy
-/// (`Measured_border`, `Conformal_border` or `Circular_border`), for CGAL's fixed border
-/// parameterizers: `Measured_border_parameterizer_3` and `Conformal_border_parameterizer_3`
+/// (`Measured_border`, `Conformal_border`, `Conformal_length_border` or `Circular_border`),
+/// for CGAL's fixed border parameterizers: `Measured_border_parameterizer_3` and `Conformal_border_parameterizer_3`
 /// are this class with the measured and the conformal border.
 ///
 /// The conventions are those of `Circular_border_arc_length_parameterizer_3`, so the class
@@ -62,7 +62,8 @@ namespace Surface_mesh_parameterization {
 ///             parameterizers)
 ///
 /// \tparam TriangleMesh_ a model of `FaceGraph`.
-/// \tparam BorderPolicy_ `Measured_border<...>`, `Conformal_border` or `Circular_border`.
+/// \tparam BorderPolicy_ `Measured_border<...>`, `Conformal_border`, `Conformal_length_border` or
+/// `Circular_border`.
 /// \tparam SolverTraits_ a model of `SparseLinearAlgebraWithFactorTraits_d` for the systems
 ///         of the policies. %Default: `Default_sparse_cholesky_traits`.
 /// \tparam ConcurrencyTag_ `CGAL::Sequential_tag` (default) or `CGAL::Parallel_tag` (see

@@ -14,6 +14,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Automatic_border.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border.h>
+#include <CGAL/Surface_mesh_parameterization/Conformal_length_border.h>
 #include <CGAL/Surface_mesh_parameterization/Default_sparse_cholesky_traits.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
@@ -66,9 +67,10 @@ enum Repair
 /// factorization, checked and repaired:
 ///
 /// 1. the border: `BorderPolicy` (`Automatic_border` by default, `Conformal_border`,
-///    `Measured_border` for the paper's method, `Circular_border`), computed with the
-///    interior cotangent Laplacian \f$ L_{II} \f$ (border eliminated, symmetric positive
-///    definite), factorized once for the whole call;
+///    `Conformal_length_border`, `Measured_border` for the paper's method, `Circular_border`),
+///    computed with the interior cotangent Laplacian \f$ L_{II} \f$ (border eliminated,
+///    symmetric positive definite), factorized once for the whole call
+///    (`Conformal_length_border` factorizes the whole cotangent Laplacian too);
 /// 2. the interior: \f$ L_{II} u_I = -L_{IB} u_B \f$, and the same for \f$ v \f$ (two
 ///    back-substitutions);
 /// 3. the check: no flipped face over the disk, hole fillings included (holes are filled

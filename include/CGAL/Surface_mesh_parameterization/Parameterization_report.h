@@ -54,7 +54,13 @@ enum Border_family
   /// toward the circle in polar coordinates (angle and normalized radius)
   MEASURED,
   /// the conformal border, blended toward the circle's turning angles (edge lengths kept)
-  CONFORMAL
+  CONFORMAL,
+  /// the conformal border with conformal lengths: at blend \f$ t \f$ the conformal member's
+  /// turning angles, the border edge lengths scaled by \f$ e^{-t (u_i + u_j) / 2} \f$, with
+  /// \f$ u \f$ the scale factors of the whole cotangent Laplacian that make the circle's
+  /// turning angles conformal (Boundary First Flattening's general boundary problem); one more
+  /// sparse factorization (`Conformal_length_border`)
+  CONFORMAL_LENGTHS
 };
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
@@ -103,6 +109,9 @@ struct Parameterization_report
   double distance_seconds = 0.;  ///< the measured border's step 2: the distances from the center to the border
   double border_map_seconds = 0.;  ///< the measured border's step 3: the polar border map
   double conformal_border_seconds = 0.;  ///< the conformal border's turning angles and polygon
+  /// the conformal-length border's scale factors (the factorization of the whole cotangent
+  /// Laplacian and one solve) and polygon, without the conformal border's own time
+  double conformal_length_seconds = 0.;
   /// the interior solves, validity checks and angle distortions of the candidates before
   /// any repair (for the automatic border, the whole search)
   double interior_seconds = 0.;
@@ -151,8 +160,14 @@ struct Parameterization_report
   std::vector<double> corrections;  ///< the correction \f$ h_k = (L_{BI} u_I)_k \f$
   std::vector<double> turning_angles;  ///< the target turning angle \f$ \tilde\kappa_k = \kappa_k - h_k \f$ (sum \f$ 2\pi \f$)
   /// the smallest blend toward the circle's turning angles at which the conformal polygon
-  /// is simple (0 when the conformal border itself is simple)
+  /// (for `Conformal_length_border`: the conformal-length polygon) is simple (0 when the
+  /// conformal border itself is simple)
   double conformal_blend = 0.;
+  /// `Conformal_length_border`: the scale factor \f$ u_k \f$ of each border vertex
+  /// (\f$ L u = (\Omega_I, \kappa_B - c) \f$, the mean of \f$ u \f$ over the disk removed);
+  /// the lengths of blend \f$ t \f$ are `edge_lengths` scaled by
+  /// \f$ e^{-t (u_k + u_{k+1}) / 2} \f$ up to one uniform factor
+  std::vector<double> scale_factors;
   /// @}
 
   /// \name The choice of the layout (the complete parameterizer)

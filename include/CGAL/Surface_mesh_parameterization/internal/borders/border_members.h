@@ -17,7 +17,9 @@
 //   - MEASURED: the polar border of a center and its distances, blended toward the circle in
 //     polar coordinates (angle and normalized radius);
 //   - CONFORMAL: the conformal border, blended toward the circle's turning angles with the
-//     edge lengths kept (conformal_border.h).
+//     edge lengths kept (conformal_border.h);
+//   - CONFORMAL_LENGTHS: the same turning angles, the lengths scaled by the conformal factors
+//     exp(-t u) of the whole cotangent Laplacian (conformal_length_data()).
 // Every border a member yields is a simple polygon (star-shaped, convex, or tested), so a
 // layout with no flipped face and valid holes is one-to-one (core/validity.h).
 
@@ -99,6 +101,21 @@ public:
     return status;
   }
 
+  // the conformal-length member (the conformal member's data if not built yet, and one
+  // factorization of the whole cotangent Laplacian), at its own smallest simple blend;
+  // `polygon` gets that border
+  template <class Disk>
+  Error_code add_conformal_lengths(Disk& disk, std::vector<Eigen::Vector2d>& polygon, std::vector<double>& closed)
+  {
+    Error_code status = m_has_conformal ? OK : add_conformal(disk, polygon, closed);
+    if(status == OK)
+      status = conformal_length_data(disk, m_conformal, m_scale);
+    if(status == OK)
+      status = smallest_simple_length_blend(m_conformal, m_scale, m_length_blend, polygon, closed);
+    m_has_conformal_lengths = (status == OK);
+    return status;
+  }
+
   // the measured member: polar angles and radii of the border vertices around a center
   void add_measured(const std::vector<double>& angles, const std::vector<double>& radii)
   {
@@ -109,17 +126,23 @@ public:
 
   bool has(Border_family m) const
   {
-    return m == CIRCLE || (m == MEASURED && m_has_measured) || (m == CONFORMAL && m_has_conformal);
+    return m == CIRCLE || (m == MEASURED && m_has_measured) || (m == CONFORMAL && m_has_conformal) ||
+           (m == CONFORMAL_LENGTHS && m_has_conformal_lengths);
   }
 
-  // The blend at which a member starts: the conformal member at its smallest simple blend
+  // The blend at which a member starts: the conformal members at their smallest simple blend
   // (0 when the conformal border is simple), the circle at 1, the measured member at 0.
   double own_blend(Border_family m) const
   {
-    return (m == CIRCLE) ? 1. : (m == CONFORMAL) ? m_simple_blend : 0.;
+    return (m == CIRCLE)              ? 1.
+           : (m == CONFORMAL)         ? m_simple_blend
+           : (m == CONFORMAL_LENGTHS) ? m_length_blend
+                                      : 0.;
   }
 
   const Conformal_border_data& conformal() const { return m_conformal; }
+  // the conformal-length member's scale factors u_B (mean of u over the disk removed)
+  const std::vector<double>& scale_factors() const { return m_scale; }
 
   // B_m(t) placed in [0,1]^2, clockwise; false when it cannot be built or is not simple.
   bool border(Border_family m, double t, std::vector<Eigen::Vector2d>& uv) const
@@ -141,6 +164,9 @@ public:
       return m_has_conformal &&
              polygon_from_turning_angles(blended_turning_angles(m_conformal, t), m_conformal.lengths, uv) == OK &&
              is_simple_polygon(uv);
+    case CONFORMAL_LENGTHS:
+      return m_has_conformal_lengths && conformal_length_polygon(m_conformal, m_scale, t, uv) == OK &&
+             is_simple_polygon(uv);
     }
     return false;
   }
@@ -149,8 +175,9 @@ private:
   std::vector<double> m_circle;
   std::vector<double> m_angles, m_radii;
   Conformal_border_data m_conformal;
-  double m_simple_blend = 0.;
-  bool m_has_measured = false, m_has_conformal = false;
+  std::vector<double> m_scale;
+  double m_simple_blend = 0., m_length_blend = 0.;
+  bool m_has_measured = false, m_has_conformal = false, m_has_conformal_lengths = false;
 };
 
 } // namespace internal

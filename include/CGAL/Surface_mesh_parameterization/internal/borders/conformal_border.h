@@ -28,6 +28,10 @@
 // k_i(t) = (1 - t) k~_i + t c_i with c_i = pi (l_{i-1} + l_i) / sum l (the turning angles of
 // the arc-length circle): every member closes, and at t = 1 every turning angle is positive,
 // so the polygon is convex.
+//
+// The conformal-length member (conformal_length_data()) keeps those turning angles and scales
+// the lengths by the conformal factors of the whole cotangent Laplacian: one more
+// factorization (the grounded cotangent system of the disk), built only for that member.
 
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/polar_map.h>
@@ -192,18 +196,88 @@ inline Error_code polygon_from_turning_angles(const std::vector<double>& turning
   return OK;
 }
 
+// The conformal-length member (METHOD.md section 8): the same turning angles
+// k(t) = (1 - t) k~ + t c, with the lengths made conformal too. On the whole cotangent
+// Laplacian L (one vertex pinned; the right-hand side sums to 0 by discrete Gauss-Bonnet)
+// L u = [Omega_I ; k_B - c], the mean of u removed; border edge k of member t has the length
+// l_k exp(-t (u_k + u_{k+1}) / 2). With this u (L u = Omega - Omega~ for the target angles),
+// exp(-u) is the conformal scale of lengths: exp(+u) makes the family diverge. u_B is linear
+// in t, so the one solve serves every t.
+template <class Disk>
+Error_code conformal_length_data(Disk& patch, const Conformal_border_data& conformal, std::vector<double>& scale)
+{
+  const std::vector<int>& border = patch.border();
+  if(border.size() < 3 || conformal.curvature.size() != border.size() || conformal.circle.size() != border.size())
+    return ERROR_WRONG_PARAMETER;
+  std::vector<double> f, u;
+  angle_sums(patch.points(), patch.faces_indices(), f);
+  for(double& x : f)
+    x = 2. * CGAL_PI - x;  // Omega_i on the interior rows
+  for(std::size_t k = 0; k < border.size(); ++k)
+    f[static_cast<std::size_t>(border[k])] = conformal.curvature[k] - conformal.circle[k];
+  const Error_code status = patch.solve_cotangent_poisson(f, u);
+  if(status != OK)
+    return status;
+  if(u.empty())
+    return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  double mean = 0.;
+  for(double x : u)
+    mean += x;
+  mean /= double(u.size());
+  scale.resize(border.size());
+  for(std::size_t k = 0; k < border.size(); ++k)
+  {
+    scale[k] = u[static_cast<std::size_t>(border[k])] - mean;
+    if(!std::isfinite(scale[k]))
+      return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  }
+  return OK;
+}
+
+// The edge lengths of member t: l_k exp(-t (u_k + u_{k+1}) / 2), with min(u_B) subtracted
+// first (a uniform scale, removed by the placement) so that no factor exceeds 1. False when
+// a length is not positive and finite (u_B spanning more than ~1400 units).
+inline bool conformal_lengths(const std::vector<double>& lengths, const std::vector<double>& scale, double t,
+                              std::vector<double>& out)
+{
+  const std::size_t m = lengths.size();
+  if(scale.size() != m || m == 0)
+    return false;
+  const double low = *std::min_element(scale.begin(), scale.end());
+  out.resize(m);
+  for(std::size_t k = 0; k < m; ++k)
+  {
+    out[k] = lengths[k] * std::exp(-0.5 * t * ((scale[k] - low) + (scale[(k + 1) % m] - low)));
+    if(!(out[k] > 0.) || !std::isfinite(out[k]))
+      return false;
+  }
+  return true;
+}
+
+// The polygon of the conformal-length member t (at t = 0: the conformal border exactly).
+inline Error_code conformal_length_polygon(const Conformal_border_data& data, const std::vector<double>& scale,
+                                           double t, std::vector<Eigen::Vector2d>& polygon,
+                                           std::vector<double>* closed_lengths = nullptr)
+{
+  std::vector<double> lengths;
+  if(!conformal_lengths(data.lengths, scale, t, lengths))
+    return ERROR_DEGENERATE_BORDER_MAP;
+  return polygon_from_turning_angles(blended_turning_angles(data, t), lengths, polygon, closed_lengths);
+}
+
 // Bisection steps of the blend toward the circle when the conformal polygon is not simple.
 constexpr int simple_blend_bisection_steps = 20;
 
-// The polygon of the smallest blend t in [0, 1] for which it is simple: t = 0 when the
-// conformal border is simple, otherwise found by simple_blend_bisection_steps bisection steps
-// (t = 1 is convex). Fails only when no polygon closes.
-inline Error_code smallest_simple_blend(const Conformal_border_data& data, double& t,
-                                        std::vector<Eigen::Vector2d>& polygon, std::vector<double>& closed)
+// The smallest blend t in [0, 1] at which the polygon of a member, `polygon_at(t, polygon,
+// closed)` (an Error_code), is simple: t = 0 when it is simple there, otherwise found by
+// simple_blend_bisection_steps bisection steps (t = 1 is convex for the conformal members).
+// Fails only when the polygon at t = 1 is not simple or does not close.
+template <class PolygonAt>
+Error_code smallest_simple_blend_of(const PolygonAt& polygon_at, double& t, std::vector<Eigen::Vector2d>& polygon,
+                                    std::vector<double>& closed)
 {
-  auto build = [&data](double blend, std::vector<Eigen::Vector2d>& p, std::vector<double>& l) {
-    return polygon_from_turning_angles(blended_turning_angles(data, blend), data.lengths, p, &l) == OK &&
-           is_simple_polygon(p);
+  auto build = [&polygon_at](double blend, std::vector<Eigen::Vector2d>& p, std::vector<double>& l) {
+    return polygon_at(blend, p, l) == OK && is_simple_polygon(p);
   };
   t = 0.;
   if(build(0., polygon, closed))
@@ -227,6 +301,27 @@ inline Error_code smallest_simple_blend(const Conformal_border_data& data, doubl
       invalid = mid;
   }
   return OK;
+}
+
+// The conformal member's smallest simple blend (lengths kept).
+inline Error_code smallest_simple_blend(const Conformal_border_data& data, double& t,
+                                        std::vector<Eigen::Vector2d>& polygon, std::vector<double>& closed)
+{
+  auto polygon_at = [&data](double blend, std::vector<Eigen::Vector2d>& p, std::vector<double>& l) {
+    return polygon_from_turning_angles(blended_turning_angles(data, blend), data.lengths, p, &l);
+  };
+  return smallest_simple_blend_of(polygon_at, t, polygon, closed);
+}
+
+// The conformal-length member's smallest simple blend.
+inline Error_code smallest_simple_length_blend(const Conformal_border_data& data, const std::vector<double>& scale,
+                                               double& t, std::vector<Eigen::Vector2d>& polygon,
+                                               std::vector<double>& closed)
+{
+  auto polygon_at = [&data, &scale](double blend, std::vector<Eigen::Vector2d>& p, std::vector<double>& l) {
+    return conformal_length_polygon(data, scale, blend, p, &l);
+  };
+  return smallest_simple_blend_of(polygon_at, t, polygon, closed);
 }
 
 } // namespace internal

@@ -59,6 +59,13 @@ public:
     return e ? e->solve(B, X) : m_systems.interior_status();
   }
 
+  // L x = f on the whole cotangent Laplacian (sum f = 0), x = 0 at the first border vertex,
+  // one entry per vertex: the grounded cotangent system, factorized on first use
+  Error_code solve_cotangent_poisson(const std::vector<double>& f, std::vector<double>& x)
+  {
+    return m_systems.solve_cotangent_poisson(f, x);
+  }
+
   Error_code factorize_spring_laplacian(double exponent) { return m_systems.factorize_spring(exponent); }
 
   Error_code solve_spring_poisson(std::size_t source, double exponent, std::vector<double>& values)

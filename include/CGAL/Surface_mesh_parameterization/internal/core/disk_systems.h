@@ -16,6 +16,9 @@
 // - the interior system: the cotangent Laplacian L_II with the border loop eliminated
 //   (symmetric positive definite); it serves the boundary Poisson distance map, the
 //   conformal border and the discrete conformal interior;
+// - the grounded cotangent system: the whole cotangent Laplacian L with one vertex (the first
+//   border vertex) pinned, which serves the conformal-length border member (L u = f with
+//   sum f = 0); built only when that member is;
 // - the spring system: the spring Laplacian grounded at one vertex, which serves the paper's
 //   Poisson distance map from any single source; freed once the distances are known;
 // - the mean value system (the repair): the mean value weights with the border loop
@@ -57,6 +60,30 @@ public:
     return (m_interior && m_interior_status == OK) ? m_interior.get() : nullptr;
   }
   Error_code interior_status() const { return m_interior ? m_interior_status : ERROR_WRONG_PARAMETER; }
+
+  // the grounded cotangent system, factorized on first use (nullptr when the disk has no main
+  // border or the factorization failed: see grounded_cotangent_status())
+  Engine* grounded_cotangent()
+  {
+    if(!m_grounded && !m_disk.border().empty())
+      m_grounded_status = build(m_grounded, std::vector<int>(1, m_disk.border().front()),
+                                Cotangent_weight{&m_disk.half_cotangents()});
+    return (m_grounded && m_grounded_status == OK) ? m_grounded.get() : nullptr;
+  }
+  Error_code grounded_cotangent_status() const { return m_grounded ? m_grounded_status : ERROR_WRONG_PARAMETER; }
+
+  // the x, one entry per vertex, with (L x)_i = f_i for every vertex but the ground (and for
+  // the ground too when sum f = 0), x = 0 at the ground: one back-substitution of the
+  // grounded cotangent system
+  Error_code solve_cotangent_poisson(const std::vector<double>& f, std::vector<double>& x)
+  {
+    Engine* e = grounded_cotangent();
+    if(!e)
+      return m_grounded ? m_grounded_status : ERROR_WRONG_PARAMETER;
+    if(f.size() != m_disk.number_of_vertices())
+      return ERROR_WRONG_PARAMETER;
+    return e->solve_with_zero_at(static_cast<std::size_t>(m_disk.border().front()), f, x);
+  }
 
   // the spring system of exponent r, grounded at the first border vertex (vertex 0 without a
   // border), factorized unless it already is for this exponent
@@ -122,7 +149,7 @@ public:
   Solver_statistics statistics() const
   {
     Solver_statistics s = m_released;
-    for(const std::unique_ptr<Engine>* e : {&m_interior, &m_spring, &m_mean_value})
+    for(const std::unique_ptr<Engine>* e : {&m_interior, &m_spring, &m_mean_value, &m_grounded})
       if(*e)
         s.add((*e)->statistics());
     return s;
@@ -139,8 +166,8 @@ private:
   const Indexed_disk& m_disk;
   SolverTraits m_traits;
   bool m_parallel;
-  std::unique_ptr<Engine> m_interior, m_spring, m_mean_value;
-  Error_code m_interior_status = OK, m_spring_status = OK, m_mean_value_status = OK;
+  std::unique_ptr<Engine> m_interior, m_spring, m_mean_value, m_grounded;
+  Error_code m_interior_status = OK, m_spring_status = OK, m_mean_value_status = OK, m_grounded_status = OK;
   double m_spring_exponent = 0.;
   Solver_statistics m_released;
 };
