@@ -90,7 +90,7 @@
 // 0 overlaps, 0 UVs outside; time <= 0.2x xatlas's from 10000 polygons on; median utilization
 // >= xatlas's).
 
-#include "benchmark_support.h"
+#include "../cli/text_output.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
@@ -1211,7 +1211,8 @@ std::vector<Mesh_entry> list_meshes(const Options& o)
   for(const auto& [dir, atlas_folder] : folders)
   {
     std::cout << "\n" << (atlas_folder ? "Atlas meshes" : "Project meshes (non-disks kept)") << ": " << dir << "\n\n";
-    for(const fs::path& file : mbp_benchmark::mesh_files_in(dir))
+    std::error_code ec;  // an unreadable folder lists no mesh
+    for(const fs::path& file : mbp_cli::mesh_files_in(dir, ec))
       if(selected(o, file.filename().string()))
         consider(file, atlas_folder, meshes);
   }

@@ -43,18 +43,16 @@ namespace mbp_benchmark {
 inline std::vector<std::filesystem::path> mesh_files_in(const std::string& dir,
                                                         const std::vector<std::string>& only = {})
 {
-  std::vector<std::filesystem::path> files;
   std::error_code ec;
-  for(const auto& entry : std::filesystem::directory_iterator(dir, ec))
-  {
-    const std::string name = entry.path().filename().string();
-    if(mbp_cli::is_mesh_file_name(name) &&
-       (only.empty() || std::find(only.begin(), only.end(), name) != only.end()))
-      files.push_back(entry.path());
-  }
+  std::vector<std::filesystem::path> files = mbp_cli::mesh_files_in(dir, ec);
   if(ec)
     files.clear();
-  std::sort(files.begin(), files.end());
+  files.erase(std::remove_if(files.begin(), files.end(),
+                             [&only](const std::filesystem::path& p) {
+                               return !only.empty() &&
+                                      std::find(only.begin(), only.end(), p.filename().string()) == only.end();
+                             }),
+              files.end());
   return files;
 }
 

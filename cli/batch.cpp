@@ -75,9 +75,8 @@ std::vector<std::string> list_inputs(const Batch_options& b, std::string& error)
     inputs = read_list(std::cin, fs::path());
   else if(fs::is_directory(b.source, ec))
   {
-    for(const fs::directory_entry& e : fs::directory_iterator(b.source, ec))
-      if(!e.is_directory(ec) && is_mesh_file_name(e.path().string()))
-        inputs.push_back(e.path().string());
+    for(const fs::path& p : mesh_files_in(b.source, ec))
+      inputs.push_back(p.string());
     if(ec)
       error = "--batch=" + b.source + ": cannot list the folder: " + ec.message();
   }

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace mbp_cli {
@@ -43,6 +44,18 @@ inline bool is_mesh_file_name(const std::string& path)
 {
   const std::string ext = lowercase_extension(path);
   return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
+}
+
+// The mesh files of the folder `folder` (is_mesh_file_name; subfolders skipped), sorted; `ec`
+// gets the error when the folder cannot be listed.
+inline std::vector<std::filesystem::path> mesh_files_in(const std::filesystem::path& folder, std::error_code& ec)
+{
+  std::vector<std::filesystem::path> files;
+  for(const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(folder, ec))
+    if(!e.is_directory(ec) && is_mesh_file_name(e.path().string()))
+      files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
 }
 
 inline std::string exact(double x)
