@@ -26,7 +26,6 @@
 
 namespace mbp_cli {
 
-/// the shortest decimal text that reads back as exactly `x` (full double precision).
 // The extension of `path` without its dot, lowercase ("a/b.OFF" -> "off").
 inline std::string lowercase_extension(const std::string& path)
 {
@@ -58,6 +57,7 @@ inline std::vector<std::filesystem::path> mesh_files_in(const std::filesystem::p
   return files;
 }
 
+/// the shortest decimal text that reads back as exactly `x` (full double precision).
 inline std::string exact(double x)
 {
   char buffer[32];
