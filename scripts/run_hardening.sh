@@ -33,7 +33,8 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_stri
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 
 # -- 1. sanitizer build and tests ------------------------------------------------------------
-# -O1 keeps the instrumented build and the tests fast; assertions stay on (no NDEBUG).
+# -O1 keeps the instrumented build and the tests fast; assertions stay on (no NDEBUG). No
+# precompiled headers: every translation unit is instrumented from its own sources.
 # The benchmarks are not built (measurement programs: the CGAL 6 step builds them); the
 # examples and the command-line program are (test_cli runs it).
 echo "hardening: ASan+UBSan build in $build"
@@ -43,7 +44,7 @@ cmake -S . -B "$build" \
   "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" \
   -DMBP_SANITIZERS=address,undefined \
   -DMBP_BUILD_TESTS=ON -DMBP_BUILD_EXAMPLES=ON -DMBP_BUILD_BENCHMARK=OFF \
-  -DMBP_BUILD_FUZZERS=ON
+  -DMBP_BUILD_FUZZERS=ON -DMBP_PRECOMPILED_HEADERS=OFF
 cmake --build "$build" -j"$jobs"
 echo "hardening: build done ($(elapsed))"
 # a test slower than 15 min under the sanitizers is reported as a failure (a hang). The core
