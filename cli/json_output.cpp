@@ -255,6 +255,7 @@ void write_charts(Json_writer& j, const SMP::Atlas_report& r)
        .member("area_uv", c.area_uv)
        .member("angle_distortion", c.angle_distortion)
        .member("area_spread", c.area_spread)
+       .member("compactness", c.compactness)
        .end_object();
   j.end_array();
 }
@@ -271,6 +272,13 @@ std::string json_atlas_document(const Run_facts& f)
   write_files(j, f);
   j.member("resolution", std::size_t(o.resolution));
   j.member("gutter", std::size_t(o.gutter));
+  j.begin_object("bounds")
+     .member("max_area_spread", r.max_area_spread)
+     .member("max_angle_distortion", r.max_angle_distortion)
+     .member("min_compactness", r.min_compactness)
+     .member("split", o.bounds.split == SMP::SPLIT_BY_SCALE ? "scale" : "normals")
+     .end_object();
+  j.member("splits", r.splits);
   j.member("points", a.soup.points.size());
   j.member("polygons", a.soup.number_of_faces());
   j.member("corners", a.soup.corners.size());

@@ -10,8 +10,11 @@
 // The options of the measured_parameterization program: parsing and help text. No CGAL here.
 
 #include "options.h"
+#include "text_output.h"
 
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <system_error>
 
 namespace mbp_cli {
@@ -22,6 +25,8 @@ namespace {
 // after it.
 const char* const usage_synopsis =
     "usage: measured_parameterization [INPUT] [OUTPUT.obj] [--atlas] [--resolution=N] [--gutter=N]\n"
+    "                                 [--max-area-spread=X] [--max-angle-distortion=X]\n"
+    "                                 [--min-compactness=X] [--split=normals|scale]\n"
     "                                 [--output=FILE] [--svg=FILE] [--json] [--help]\n"
     "       measured_parameterization [INPUT] [OUTPUT.obj] --single-chart [--seams=FILE.selection.txt]\n"
     "                                 [--center=poisson|geodesic[:METHOD]|vertex:N]\n"
@@ -37,9 +42,10 @@ const char* const usage_synopsis =
     "soup and repaired (equal points merged, duplicate and degenerate polygons, non-manifold\n"
     "edges and vertices, orientation, non-orientable pieces cut open, polygons triangulated,\n"
     "zero-area faces set aside); every connected component becomes a chart (a disk flattened with\n"
-    "the automatic border, any other surface cut along automatic seams first), split where its\n"
-    "map would not be one-to-one; the charts are scaled to one texel density and packed into\n"
-    "the unit square. Every corner of every input polygon gets a UV.\n"
+    "the automatic border, any other surface cut along automatic seams first), split in two,\n"
+    "recursively, where its map would not be one-to-one or misses the distortion bounds below;\n"
+    "the charts are scaled to one texel density and packed into the unit square. Every corner of\n"
+    "every input polygon gets a UV.\n"
     "\n"
     "With --single-chart (implied by each of its options: --border, --center, --distance,\n"
     "--seams, --write-seams, --solver, --no-repair) flattens one disk-like triangle mesh with\n"
@@ -76,6 +82,22 @@ const char* const usage_options =
     "                     (default 1024, from 8 to 65536)\n"
     "  --gutter=N         texels kept free between two charts and between a chart and the\n"
     "                     border of the texture (default 2, at most N / 4 of --resolution)\n"
+    "  --max-area-spread=X\n"
+    "                     the bound on each chart's area spread (area-weighted mean of\n"
+    "                     |log(UV area / 3D area)| after one scale of the chart; default 0.2,\n"
+    "                     inf: one chart per component wherever its map is one-to-one). A\n"
+    "                     chart that misses a bound is split in two, recursively\n"
+    "  --max-angle-distortion=X\n"
+    "                     the bound on each chart's angle distortion (the paper's; default 0.05)\n"
+    "  --min-compactness=X\n"
+    "                     the bound on each chart's compactness: its UV area over the square of\n"
+    "                     its bounding box's longer side (default 0.125, 0 to 1; 0 keeps long\n"
+    "                     strips and rings, which fill the texture badly)\n"
+    "  --split=normals|scale\n"
+    "                     how a chart that misses a bound is split: two regions grown from the\n"
+    "                     two most different normals (default) or from the smallest and largest\n"
+    "                     conformal scale factors of its map; faces joined by smooth edges move\n"
+    "                     together\n"
     "  --single-chart     the single-chart parameterization below; each of the following\n"
     "                     options implies it\n"
     "  --seams=FILE.selection.txt\n"
@@ -288,6 +310,30 @@ std::string set_count(const std::string& value, const std::string& name, unsigne
   return std::string();
 }
 
+// --NAME=X, a number from `least` to `most` (inf allowed where `most` is)
+std::string set_number(const std::string& value, const std::string& name, double least, double most, double& x)
+{
+  const std::string expected = " (expected a number from " + rounded(least) + " to " +
+                               (std::isinf(most) ? std::string("inf") : rounded(most)) + ")";
+  char* end = nullptr;
+  const double v = value.empty() ? 0. : std::strtod(value.c_str(), &end);
+  if(value.empty() || end != value.c_str() + value.size() || std::isnan(v))
+    return "bad value '" + value + "' of " + name + expected;
+  if(v < least || v > most)
+    return "value " + value + " of " + name + " is out of range" + expected;
+  x = v;
+  return std::string();
+}
+
+std::string set_split(const std::string& value, Options& o)
+{
+  if(value != "normals" && value != "scale")
+    return "unknown value '" + value + "' of --split (expected normals or scale)";
+  o.bounds.split = (value == "normals") ? CGAL::Surface_mesh_parameterization::SPLIT_BY_NORMALS
+                                        : CGAL::Surface_mesh_parameterization::SPLIT_BY_SCALE;
+  return std::string();
+}
+
 // --NAME=FILE: `file` is set, or the error for an empty name
 std::string set_file(const std::string& value, const std::string& name, const char* placeholder, std::string& file)
 {
@@ -414,7 +460,11 @@ private:
     for(const char* name : {"--border", "--center", "--distance", "--seams", "--write-seams", "--solver"})
       if(single_option.empty() && seen(name))
         single_option = name;
-    const std::string atlas_option = seen("--resolution") ? "--resolution" : seen("--gutter") ? "--gutter" : "";
+    std::string atlas_option;
+    for(const char* name : {"--resolution", "--gutter", "--max-area-spread", "--max-angle-distortion", "--min-compactness",
+                            "--split"})
+      if(atlas_option.empty() && seen(name))
+        atlas_option = name;
     if(single_option.empty())
     {
       m_o.mode = Mode::atlas;
@@ -483,7 +533,7 @@ private:
   std::vector<std::string> m_positional;
   bool m_options_ended = false;
   bool m_atlas = false, m_single_chart = false;  // --atlas, --single-chart
-  Value_option m_values[15] = {
+  Value_option m_values[19] = {
     {"--center", set_center, false},
     {"--distance", set_distance, false},
     {"--border", set_border, false},
@@ -499,6 +549,18 @@ private:
      [](const std::string& v, Options& o) { return set_count(v, "--resolution", 8, 1u << 16, o.resolution); }, false},
     {"--gutter", [](const std::string& v, Options& o) { return set_count(v, "--gutter", 0, 1u << 14, o.gutter); },
      false},
+    {"--max-area-spread",
+     [](const std::string& v, Options& o) {
+       return set_number(v, "--max-area-spread", 0., HUGE_VAL, o.bounds.max_area_spread);
+     }, false},
+    {"--max-angle-distortion",
+     [](const std::string& v, Options& o) {
+       return set_number(v, "--max-angle-distortion", 0., HUGE_VAL, o.bounds.max_angle_distortion);
+     }, false},
+    {"--min-compactness",
+     [](const std::string& v, Options& o) { return set_number(v, "--min-compactness", 0., 1., o.bounds.min_compactness); },
+     false},
+    {"--split", set_split, false},
     {"--threads", [](const std::string& v, Options& o) { return set_count(v, "--threads", 0, 256, o.threads); },
      false},
     {"--batch", [](const std::string& v, Options& o) { return set_file(v, "--batch", "FOLDER|LIST|-", o.batch.source); },

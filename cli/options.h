@@ -13,6 +13,8 @@
 #ifndef MBP_CLI_OPTIONS_H
 #define MBP_CLI_OPTIONS_H
 
+#include <CGAL/Surface_mesh_parameterization/Atlas_report.h>
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -65,6 +67,9 @@ struct Options
   Mode mode = Mode::atlas;
   unsigned int resolution = 1024;   // --resolution=N: texels per side of the atlas texture
   unsigned int gutter = 2;          // --gutter=N: texels between charts and to the border
+  // --max-area-spread, --max-angle-distortion, --min-compactness, --split: the charts' bounds
+  // and how a chart that misses them is split (the library's defaults)
+  CGAL::Surface_mesh_parameterization::Atlas_options bounds;
   bool repair = true;       // --no-repair turns it off
   Border border = Border::automatic;
   bool fixed_center = false;        // --center=vertex:N

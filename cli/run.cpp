@@ -732,7 +732,7 @@ Run_error Run::Impl::make_atlas(const Options& options)
   a.empty_polygons = soup.number_of_faces() - polygons.size();
   if(polygons.empty())
     return fail(Failure{SMP::ERROR_EMPTY_MESH, "it has no faces (" + std::to_string(soup.points.size()) + " vertices)"});
-  SMP::Atlas_options atlas_options;
+  SMP::Atlas_options atlas_options = options.bounds;
   atlas_options.resolution = options.resolution;
   atlas_options.gutter = options.gutter;
   std::vector<std::vector<Point_2> > corner_uvs;

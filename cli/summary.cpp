@@ -86,7 +86,7 @@ std::string atlas_summary_line(const Run_facts& f)
   return f.mesh_name + ": " + counted(a.soup.points.size(), "point") + ", " +
          counted(a.soup.number_of_faces(), "polygon") + " | " + atlas_charts_text(f) + " | repairs: " +
          repair_list(r.repair) + " | area spread " + rounded(r.area_spread) + ", angle distortion " +
-         rounded(r.angle_distortion) + " | seconds: repair " + rounded(r.repair_seconds, 3) + ", charts " +
+         rounded(r.angle_distortion) + " | " + atlas_bounds_text(r) + " | seconds: repair " + rounded(r.repair_seconds, 3) + ", charts " +
          rounded(r.chart_seconds, 3) + ", packing " + rounded(r.packing_seconds, 3) + ", total " +
          rounded(r.total_seconds, 3) + " | wrote " + o.output + (o.svg.empty() ? std::string() : ", " + o.svg) + "\n";
 }
@@ -122,6 +122,21 @@ std::string repair_list(const SMP::Soup_repair_report& r)
 const char* flattening_name(SMP::Chart_flattening f)
 {
   return f == SMP::DISK_CHART ? "disk" : f == SMP::SEAMED_CHART ? "seamed" : "unfolded";
+}
+
+std::string atlas_bounds_text(const SMP::Atlas_report& r)
+{
+  double spread = 0., angle = 0., compactness = r.charts.empty() ? 0. : 1.;
+  for(const SMP::Atlas_chart_report& c : r.charts)
+  {
+    spread = (std::max)(spread, c.area_spread);
+    angle = (std::max)(angle, c.angle_distortion);
+    compactness = (std::min)(compactness, c.compactness);
+  }
+  return "bounds: area spread <= " + rounded(r.max_area_spread) + " (largest " + rounded(spread, 3) +
+         "), angle distortion <= " + rounded(r.max_angle_distortion) + " (largest " + rounded(angle, 3) +
+         "), compactness >= " + rounded(r.min_compactness) + " (smallest " + rounded(compactness, 3) + "), " +
+         counted(r.splits, "split");
 }
 
 std::string atlas_charts_text(const Run_facts& f)

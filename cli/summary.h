@@ -48,6 +48,10 @@ std::string repair_list(const CGAL::Surface_mesh_parameterization::Soup_repair_r
 /// the name of a chart's flattening: disk, seamed or unfolded
 const char* flattening_name(CGAL::Surface_mesh_parameterization::Chart_flattening f);
 
+/// the charts' bounds and their extreme figures: "bounds: area spread <= 0.2 (largest 0.18), ...,
+/// 12 splits" (a chart of one triangle is kept whatever its compactness)
+std::string atlas_bounds_text(const CGAL::Surface_mesh_parameterization::Atlas_report& r);
+
 /// the atlas in a few words: "3 charts, utilization 61.2% (1024 texels, gutter 2)"
 std::string atlas_charts_text(const Run_facts& facts);
 

@@ -118,6 +118,7 @@ std::string atlas_picture(const Run_facts& f)
   picture.caption.push_back("repairs: " + repair_list(r.repair));
   picture.caption.push_back("area spread " + rounded(r.area_spread) + " (after one scale of the atlas),  angle distortion " +
                             rounded(r.angle_distortion));
+  picture.caption.push_back(atlas_bounds_text(r));
   return svg_document(picture);
 }
 

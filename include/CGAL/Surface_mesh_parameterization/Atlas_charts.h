@@ -12,11 +12,13 @@
 
 /// \file Atlas_charts.h
 /// The charts of a texture atlas: each connected component of a repaired triangle set
-/// flattened with the package's parameterizers, split where a chart is not one-to-one.
+/// flattened with the package's parameterizers, split where a chart is not one-to-one or
+/// misses the distortion bound (`Atlas_options`).
 
 #include <CGAL/Surface_mesh_parameterization/Conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/compute_disk_seams.h>
 #include <CGAL/Surface_mesh_parameterization/main_border.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/chart_split.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/charts.h>
 
 #include <CGAL/Simple_cartesian.h>
@@ -172,23 +174,47 @@ inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size
   return is_one_to_one_chart(t, chart);
 }
 
-// The charts of a face subset: each connected part one chart if it can be, otherwise split in
-// two, recursively (a single triangle always unfolds).
-inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
-                             std::vector<Atlas_chart>& charts)
+// The bounds of the charts: the options', and the length under which a chart is short enough
+// to need no compactness (half the side of a square of the whole mesh's area: such a chart
+// fits into the gaps of the packing, whatever its shape).
+struct Chart_bounds
+{
+  const Atlas_options& options;
+  double short_length;
+};
+
+// Whether a chart meets the bounds.
+inline bool within_bounds(const Atlas_chart& chart, const Chart_bounds& bounds)
+{
+  const Atlas_options& o = bounds.options;
+  return chart.area_spread <= o.max_area_spread && chart.angle_distortion <= o.max_angle_distortion &&
+         (chart.compactness >= o.min_compactness || chart.length <= bounds.short_length);
+}
+
+// The charts of a face subset: each connected part one chart when its map is one-to-one and
+// within the bounds, otherwise split in two (split_for_bound()), recursively; a single
+// triangle always unfolds, undistorted. `splits` counts the splits.
+inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::size_t>& faces, const Chart_bounds& bounds,
+                             std::vector<Atlas_chart>& charts, std::size_t& splits)
 {
   for(const std::vector<std::size_t>& part : edge_components(t, faces))
   {
     Atlas_chart chart;
-    if(flatten_subset(t, part, chart) || part.size() == 1)
+    const bool one_to_one = flatten_subset(t, part, chart) || part.size() == 1;
+    if(one_to_one)
     {
       chart_area_figures(t, chart);
       chart_angle_distortion(t, chart);
-      charts.push_back(std::move(chart));
-      continue;
+      chart_compactness(chart);
+      if(part.size() == 1 || within_bounds(chart, bounds))
+      {
+        charts.push_back(std::move(chart));
+        continue;
+      }
     }
-    for(const std::vector<std::size_t>& half : split_in_two(t, part))
-      flatten_face_set(t, half, charts);
+    ++splits;
+    for(const std::vector<std::size_t>& half : split_for_bound(t, part, bounds.options.split, one_to_one ? &chart : nullptr))
+      flatten_face_set(t, half, bounds, charts, splits);
   }
 }
 

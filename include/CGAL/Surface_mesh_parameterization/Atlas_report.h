@@ -22,11 +22,44 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
+/// How a chart that misses the distortion bound is split in two (`Atlas_options::split`).
+/// Both grow two regions from two seed faces over the chart's faces, each face going to the
+/// region that reaches it at the lower cost; faces joined across smooth edges (dihedral angle
+/// below 30 degrees) move together when the chart has sharp edges, so that a planar or smooth
+/// face of a CAD part is never cut.
+enum Atlas_split
+{
+  /// the seeds are the two most different normals; a face's cost is 1 - cos of the angle
+  /// between its normal and its seed's (segmentation by normal cones, as xatlas and D-charts)
+  SPLIT_BY_NORMALS,
+  /// the seeds are the faces of the smallest and of the largest conformal scale factor of the
+  /// chart's map (log of UV area over 3D area); a face's cost is the difference of its scale
+  /// factor and its seed's (cuts where the scale factor is extreme)
+  SPLIT_BY_SCALE
+};
+
+/// \ingroup PkgSurfaceMeshParameterizationMeasured
 /// The options of `compute_atlas()` and `compute_atlas_of_polygon_soup()`: the texture the
-/// atlas is made for. (An options object rather than named parameters: CGAL 5.5's named
-/// parameters are a closed list.)
+/// atlas is made for, and the distortion bound of its charts. (An options object rather than
+/// named parameters: CGAL 5.5's named parameters are a closed list.)
 struct Atlas_options
 {
+  /// The bound on a chart's area spread (`Atlas_chart_report::area_spread`, default 0.2):
+  /// a chart whose one-to-one map exceeds it, or misses `max_angle_distortion` or
+  /// `min_compactness`, is split in two (`split`), recursively, until each part meets the
+  /// bounds (a single triangle always does). Infinity keeps one chart per connected component wherever a one-to-one map exists.
+  double max_area_spread = 0.2;
+  /// The bound on a chart's angle distortion (the paper's, `Atlas_chart_report::angle_distortion`,
+  /// default 0.05).
+  double max_angle_distortion = 0.05;
+  /// The bound on a chart's compactness (`Atlas_chart_report::compactness`, default 0.125):
+  /// a long strip or a sparse ring sets the scale of the whole atlas and fills the square
+  /// badly, so it is split too, unless it is short: its longer side at most half the side of
+  /// a square of the whole mesh's area (such a chart fits into the gaps of the packing).
+  /// Zero keeps every shape.
+  double min_compactness = 0.125;
+  /// How a chart that misses the bounds is split (default `SPLIT_BY_NORMALS`).
+  Atlas_split split = SPLIT_BY_NORMALS;
   /// Texels per side of the square texture the atlas is packed for (default 1024, at least 8).
   unsigned int resolution = 1024;
   /// Texels kept free between any two charts and between a chart and the border of the square
@@ -62,6 +95,9 @@ struct Atlas_chart_report
   /// area-weighted mean of |log(UV area / 3D area)| over its faces, after one scale of the
   /// chart (0: every face keeps its share of the chart's area)
   double area_spread = 0.;
+  /// its UV area over the square of the longer side of its smallest bounding rectangle
+  /// (pi / 4 for a disk, 1 / n for a straight strip n times as long as wide)
+  double compactness = 0.;
 };
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
@@ -73,6 +109,10 @@ struct Atlas_report
   Soup_repair_report repair;
   /// the charts, by chart id (the ids written to the face or polygon chart map)
   std::vector<Atlas_chart_report> charts;
+  /// the bounds the charts were made for (`Atlas_options`)
+  double max_area_spread = 0., max_angle_distortion = 0., min_compactness = 0.;
+  /// charts split in two because they missed a bound (each split adds at least one chart)
+  std::size_t splits = 0;
   /// the area of all charts in the atlas over the area of the unit square
   double utilization = 0.;
   /// the scale of 3D lengths into the atlas (UV length per unit of 3D length), the same in

@@ -53,19 +53,28 @@ struct Atlas_layout
 inline Error_code check_atlas_options(const Atlas_options& options)
 {
   const bool ok = options.resolution >= 8 && options.resolution <= (1u << 16) &&
-                  options.gutter <= options.resolution / 4;
+                  options.gutter <= options.resolution / 4 && options.max_area_spread >= 0. &&
+                  options.max_angle_distortion >= 0. && options.min_compactness >= 0. &&
+                  (options.split == SPLIT_BY_NORMALS || options.split == SPLIT_BY_SCALE);
   return ok ? OK : ERROR_WRONG_PARAMETER;
 }
 
 // Step 2: the charts of each connected component of the repaired mesh (Atlas_charts.h).
-inline std::vector<Atlas_chart> make_charts(const Atlas_input& input, const Atlas_triangles& t)
+inline std::vector<Atlas_chart> make_charts(const Atlas_input& input, const Atlas_triangles& t,
+                                            const Atlas_options& options, std::size_t& splits)
 {
   std::vector<std::vector<std::size_t> > components(input.report.components);
   for(std::size_t f = 0; f < input.face_component.size(); ++f)
     components[input.face_component[f]].push_back(f);
+  double area = 0.;
+  for(const Face_indices& v : t.faces)
+    area += 0.5 * (t.points[std::size_t(v[1])] - t.points[std::size_t(v[0])])
+                    .cross(t.points[std::size_t(v[2])] - t.points[std::size_t(v[0])]).norm();
+  const Chart_bounds bounds{options, 0.5 * std::sqrt(area)};
   std::vector<Atlas_chart> charts;
+  splits = 0;
   for(const std::vector<std::size_t>& component : components)
-    flatten_face_set(t, component, charts);
+    flatten_face_set(t, component, bounds, charts, splits);
   return charts;
 }
 
@@ -122,6 +131,7 @@ inline void report_charts(const Atlas_triangles& t, const Atlas_layout& layout, 
     c.area_uv = chart.area_3d * report.texel_density * report.texel_density;
     c.angle_distortion = chart.angle_distortion;
     c.area_spread = chart.area_spread;
+    c.compactness = chart.compactness;
     weighted += c.area_3d * c.angle_distortion;
     total += c.area_3d;
     report.charts.push_back(c);
@@ -142,7 +152,10 @@ inline Error_code lay_out_atlas(const Atlas_input& input, const Atlas_options& o
   typedef std::chrono::steady_clock Clock;
   const Clock::time_point start = Clock::now();
   const Atlas_triangles t = repaired_triangles(input);
-  layout.charts = make_charts(input, t);
+  layout.charts = make_charts(input, t, options, report.splits);
+  report.max_area_spread = options.max_area_spread;
+  report.max_angle_distortion = options.max_angle_distortion;
+  report.min_compactness = options.min_compactness;
   const Clock::time_point charted = Clock::now();
   layout.face_chart.assign(t.faces.size(), 0);
   layout.face_uv.assign(t.faces.size(), std::array<Eigen::Vector2d, 3>());
@@ -207,9 +220,10 @@ inline std::size_t input_polygon_chart(const Atlas_input& input, const Atlas_lay
 ///    place of the repaired mesh its UV comes from;
 /// 2. each connected component becomes one chart when its map is one-to-one (a disk
 ///    flattened by `Conformal_parameterizer_3` with the automatic border, any other surface
-///    cut by `compute_disk_seams()` first), and is split in two, recursively, where it is not;
-///    a face set that no parameterizer maps one-to-one is unfolded isometrically
-///    (`Chart_flattening`);
+///    cut by `compute_disk_seams()` first) and within the distortion bounds
+///    (`Atlas_options::max_area_spread`, `max_angle_distortion`), and is split in two
+///    (`Atlas_split`), recursively, where it is not; a face set that no parameterizer maps
+///    one-to-one is unfolded isometrically (`Chart_flattening`);
 /// 3. the charts are scaled to one texel density (UV area proportional to 3D area), turned
 ///    to their smallest bounding box and packed into the unit square by a rasterized packer,
 ///    `options.gutter` texels apart and from the border at `options.resolution` texels per

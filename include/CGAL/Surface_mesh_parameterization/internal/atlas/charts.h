@@ -18,6 +18,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Atlas_report.h>
 
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/min_area_rectangle.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/angle_distortion.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/triangle_adjacency.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
@@ -63,6 +64,8 @@ struct Atlas_chart
   Chart_flattening flattening = DISK_CHART;
   double angle_distortion = 0.;  // the paper's, over the chart cut open along its seams
   double area_spread = 0.;       // area-weighted mean |log(UV area / 3D area)| after one scale
+  double compactness = 0.;       // UV area over the square of its smallest box's longer side
+  double length = 0.;            // that side at the 3D scale (UV area scaled to the 3D area)
   double area_3d = 0., area_uv = 0.;
 };
 
@@ -341,6 +344,20 @@ inline void chart_area_figures(const Atlas_triangles& t, Atlas_chart& chart)
     if(area3[i] > 0. && area2[i] > 0.)
       sum += area3[i] * std::abs(std::log(area2[i] / area3[i]) + log_scale);
   chart.area_spread = sum / chart.area_3d;
+}
+
+// The compactness of a chart: its UV area over the square of the longer side of its smallest
+// bounding rectangle (pi / 4 for a disk, 1 / n for a straight strip n times as long as wide),
+// the share of the square a lone chart can fill.
+inline void chart_compactness(Atlas_chart& chart)
+{
+  std::vector<Eigen::Vector2d> corners;
+  corners.reserve(3 * chart.corners.size());
+  for(const std::array<Eigen::Vector2d, 3>& c : chart.corners)
+    corners.insert(corners.end(), c.begin(), c.end());
+  const double side = min_area_rectangle(corners).width;
+  chart.compactness = (side > 0.) ? (std::min)(chart.area_uv / (side * side), 1.) : 0.;
+  chart.length = (chart.area_uv > 0.) ? side * std::sqrt(chart.area_3d / chart.area_uv) : 0.;
 }
 
 // The paper's angle distortion of a chart over the chart cut open along its seams: a vertex is
