@@ -13,7 +13,7 @@
 // code below, which uses none of the package's headers (CGAL is used only to read the input
 // meshes and for the exact orientation predicate of the overlap test).
 //
-//   atlas_comparison [--only=NAME]... [--mesh=FILE]... [--xatlas-only] [--out=DIR]
+//   atlas_comparison [--only=NAME]... [--mesh=FILE]... [--xatlas-only] [--sweep=B,B,...] [--out=DIR]
 //                    [--timeout=SECONDS] [--ours=PROGRAM] [--xatlas=PROGRAM]
 //                    [--atlas-dir=DIR] [--meshes-dir=DIR]
 //   atlas_comparison --self-test [--out=DIR]
@@ -21,6 +21,12 @@
 //   --only=NAME     only the mesh of this file name (repeatable)
 //   --mesh=FILE     also this mesh file (repeatable; e.g. a refined 1M-face scan)
 //   --xatlas-only   run xatlas only (ours: "not run")
+//   --sweep=B,...   also run ours at each of these bounds of --max-area-spread (e.g.
+//                   0.05,0.1,0.4,inf). Ours always runs three times per mesh besides: at its
+//                   defaults, with every bound lifted (--max-area-spread=inf
+//                   --max-angle-distortion=inf --min-compactness=0: the previous issue's one
+//                   chart per component) and at xatlas's own area spread on the mesh (rounded
+//                   up to 4 decimals); the "Bounds" table and the issue 23 summary compare them
 //   --out=DIR       where the OBJs, the programs' stdout and stderr go (default /tmp/mbp-atlas)
 //   --timeout=S     a run is killed after S seconds of wall time (default 600)
 //   --ours=PROGRAM  our command-line program (default: measured_parameterization of this build)
@@ -1171,6 +1177,7 @@ struct Mesh_entry
 struct Options
 {
   std::vector<std::string> only, extra;
+  std::vector<std::string> sweep;  // --sweep: bounds of --max-area-spread
   bool xatlas_only = false, self_test = false;
   std::string out = "/tmp/mbp-atlas";
   double timeout = 600.;
@@ -1315,19 +1322,22 @@ void measure_output(const Mesh_entry& mesh, const std::string& obj_path, Side& s
   side.uv_corners_missing = expected - covered;
 }
 
-Side run_side(const std::string& program, const Mesh_entry& mesh, const Options& o)
+// One run: xatlas, or ours with `args` added (`label` names its files: NAME.LABEL.obj).
+Side run_side(const std::string& program, const Mesh_entry& mesh, const Options& o, const std::string& label,
+              const std::vector<std::string>& args = {})
 {
   Side side;
   side.program = program;
-  const std::string base = (fs::path(o.out) / (mesh.name + "." + program)).string();
+  const std::string base = (fs::path(o.out) / (mesh.name + "." + label)).string();
   const std::string obj = base + ".obj";
   std::error_code ec;
   fs::remove(obj, ec);
   const std::string out = base + (program == "ours" ? ".json" : ".log");
+  std::vector<std::string> command = {program == "ours" ? o.ours : o.xatlas, mesh.path, obj};
   if(program == "ours")
-    side.process = run_process({o.ours, mesh.path, obj, "--json"}, out, base + ".log", o.timeout);
-  else
-    side.process = run_process({o.xatlas, mesh.path, obj}, out, out, o.timeout);
+    command.push_back("--json");
+  command.insert(command.end(), args.begin(), args.end());
+  side.process = run_process(command, out, program == "ours" ? base + ".log" : out, o.timeout);
   side.reported_charts = reported_charts(out);
   if(!side.process.ok())
     side.problem = "see " + base + ".log";
@@ -1341,10 +1351,20 @@ Side run_side(const std::string& program, const Mesh_entry& mesh, const Options&
 // ---------------------------------------------------------------------------------------
 // The table and the summary
 
+// A run of ours at another setting: the bound of --max-area-spread ("one chart": the previous
+// issue's atlas, one chart per component wherever its map is one-to-one).
+struct Sweep_run
+{
+  std::string bound;
+  Side side;
+};
+
 struct Row
 {
   Mesh_entry mesh;
   Side ours, xatlas;
+  Sweep_run one_chart, at_xatlas;  // at_xatlas: the bound set to xatlas's area spread
+  std::vector<Sweep_run> sweep;
 };
 
 std::string fixed(double x, int digits)
@@ -1366,6 +1386,40 @@ std::string uv_corners_cell(const Side& s)
 std::string overlaps_cell(const Overlaps& o)
 {
   return std::to_string(o.pairs) + (o.complete ? "" : "+ (stopped)");
+}
+
+std::vector<std::string> split_list(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  for(std::string item; std::getline(in, item, ',');)
+    if(!item.empty())
+      items.push_back(item);
+  return items;
+}
+
+// The arguments of ours at an area-spread bound; "one chart" lifts every bound.
+std::vector<std::string> bound_arguments(const std::string& bound)
+{
+  if(bound == "one chart")
+    return {"--max-area-spread=inf", "--max-angle-distortion=inf", "--min-compactness=0"};
+  return {"--max-area-spread=" + bound};
+}
+
+Sweep_run sweep_run(const Mesh_entry& mesh, const Options& o, const std::string& bound, const std::string& label)
+{
+  return Sweep_run{bound, run_side("ours", mesh, o, label, bound_arguments(bound))};
+}
+
+// The previous issue's atlas, the bound at xatlas's own area spread, and the --sweep bounds.
+void run_sweep(const Mesh_entry& mesh, const Options& o, Row& r)
+{
+  r.one_chart = sweep_run(mesh, o, "one chart", "one-chart");
+  if(r.xatlas.measured)
+    r.at_xatlas = sweep_run(mesh, o, fixed(std::max(std::ceil(1e4 * r.xatlas.metrics.area_spread), 1.) / 1e4, 4),
+                            "at-xatlas");
+  for(const std::string& bound : o.sweep)
+    r.sweep.push_back(sweep_run(mesh, o, bound, "bound-" + bound));
 }
 
 void print_table_header()
@@ -1526,6 +1580,99 @@ void print_summary(const std::vector<Row>& rows, const Options& o)
       }
   if(problems == 0)
     std::cout << "- none\n";
+}
+
+// ---------------------------------------------------------------------------------------
+// Issue 23: charts within a bound
+
+void print_sweep_side(const Mesh_entry& mesh, const std::string& setting, const Side& s)
+{
+  std::vector<std::string> cells = {mesh.name, setting};
+  if(!s.measured)
+  {
+    cells.push_back(s.process.status() + (s.problem.empty() ? "" : " (" + s.problem + ")"));
+    cells.resize(cells.size() + 7);
+    print_cells(cells);
+    return;
+  }
+  const Metrics& m = s.metrics;
+  cells.insert(cells.end(), {std::to_string(m.charts), fixed(m.area_spread, 3), fixed(m.angle, 2), fixed(m.utilization, 3),
+                             std::to_string(m.flips), overlaps_cell(m.overlaps), fixed(s.process.seconds, 2),
+                             fixed(s.process.peak_mb, 0)});
+  print_cells(cells);
+}
+
+// Per mesh: xatlas, ours at the default bounds, the previous issue's one chart per component,
+// ours at xatlas's area spread, and the --sweep bounds.
+void print_sweep_table(const std::vector<Row>& rows)
+{
+  std::cout << "\n### Bounds (issue 23)\n\n"
+               "| mesh | setting | charts cc | area spread | angle (deg) | util | flips | overlaps | time (s) | peak (MB) |\n"
+               "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+  for(const Row& r : rows)
+  {
+    print_sweep_side(r.mesh, "xatlas", r.xatlas);
+    print_sweep_side(r.mesh, "ours (default)", r.ours);
+    print_sweep_side(r.mesh, "ours, one chart", r.one_chart.side);
+    if(r.at_xatlas.side.process.ran)
+      print_sweep_side(r.mesh, "ours <= xatlas's spread " + r.at_xatlas.bound, r.at_xatlas.side);
+    for(const Sweep_run& w : r.sweep)
+      print_sweep_side(r.mesh, "ours <= " + w.bound, w.side);
+  }
+}
+
+// The medians of a figure over the meshes where both sides were measured.
+template <class Figure>
+std::array<double, 2> medians(const std::vector<Row>& rows, Figure figure)
+{
+  std::vector<double> ours, xatlas;
+  for(const Row& r : rows)
+    if(r.ours.measured && r.xatlas.measured)
+    {
+      ours.push_back(figure(r.ours.metrics));
+      xatlas.push_back(figure(r.xatlas.metrics));
+    }
+  return {{median(ours), median(xatlas)}};
+}
+
+void print_bound_targets(const std::vector<Row>& rows)
+{
+  const auto spread = medians(rows, [](const Metrics& m) { return m.area_spread; });
+  const auto angle = medians(rows, [](const Metrics& m) { return m.angle; });
+  const auto charts = medians(rows, [](const Metrics& m) { return double(m.charts); });
+  const auto util = medians(rows, [](const Metrics& m) { return m.utilization; });
+  auto verdict = [](bool met) { return met ? " (target met)" : " (target missed)"; };
+  std::cout << "\n### Summary of the bounds (issue 23 targets)\n\n"
+            << "- median area spread: ours " << fixed(spread[0], 3) << ", xatlas " << fixed(spread[1], 3)
+            << verdict(spread[0] <= 0.25) << " (target <= 0.25)\n"
+            << "- median angle (deg): ours " << fixed(angle[0], 2) << ", xatlas " << fixed(angle[1], 2)
+            << verdict(angle[0] <= angle[1]) << "\n"
+            << "- median charts: ours " << fixed(charts[0], 1) << ", xatlas " << fixed(charts[1], 1) << " (ratio "
+            << fixed(charts[0] / charts[1], 3) << ")" << verdict(charts[0] <= 0.25 * charts[1]) << " (target <= 0.25x)\n"
+            << "- median utilization: ours " << fixed(util[0], 3) << ", xatlas " << fixed(util[1], 3)
+            << verdict(util[0] >= util[1]) << "\n";
+  std::vector<double> at_xatlas, time_ratio;
+  std::vector<std::string> slow;
+  for(const Row& r : rows)
+  {
+    if(r.at_xatlas.side.measured && r.xatlas.measured && r.xatlas.metrics.charts > 0)
+      at_xatlas.push_back(double(r.at_xatlas.side.metrics.charts) / double(r.xatlas.metrics.charts));
+    if(r.ours.process.ok() && r.one_chart.side.process.ok() && r.one_chart.side.process.seconds > 0.)
+    {
+      time_ratio.push_back(r.ours.process.seconds / r.one_chart.side.process.seconds);
+      if(time_ratio.back() > 2.)
+        slow.push_back(r.mesh.name + " " + fixed(time_ratio.back(), 2) + "x");
+    }
+  }
+  std::cout << "- at a bound set to xatlas's area spread: median of ours' charts over xatlas's "
+            << fixed(median(at_xatlas), 3) << " (" << at_xatlas.size() << " meshes)" << verdict(median(at_xatlas) <= 0.5)
+            << " (target <= 0.5)\n"
+            << "- time of the default over one chart per component (the previous issue's atlas): median "
+            << fixed(median(time_ratio), 2) << "x; over 2x on " << slow.size() << " of " << time_ratio.size()
+            << " meshes";
+  for(std::size_t i = 0; i < slow.size(); ++i)
+    std::cout << (i == 0 ? ": " : ", ") << slow[i];
+  std::cout << "\n";
 }
 
 // ---------------------------------------------------------------------------------------
@@ -1808,6 +1955,7 @@ bool parse_options(int argc, char** argv, Options& o)
     if(a == "--xatlas-only") o.xatlas_only = true;
     else if(a == "--self-test") o.self_test = true;
     else if(!value("--only=").empty()) o.only.push_back(value("--only="));
+    else if(!value("--sweep=").empty()) o.sweep = split_list(value("--sweep="));
     else if(!value("--mesh=").empty()) o.extra.push_back(value("--mesh="));
     else if(!value("--out=").empty()) o.out = value("--out=");
     else if(!value("--timeout=").empty()) o.timeout = std::atof(value("--timeout=").c_str());
@@ -1845,11 +1993,14 @@ int main_benchmark(const Options& o)
   std::vector<Row> rows;
   for(const Mesh_entry& mesh : meshes)
   {
-    Row r{mesh, Side(), Side()};
+    Row r;
+    r.mesh = mesh;
     r.ours.program = "ours";
     if(!o.xatlas_only)
-      r.ours = run_side("ours", mesh, o);
-    r.xatlas = run_side("xatlas", mesh, o);
+      r.ours = run_side("ours", mesh, o, "ours");
+    r.xatlas = run_side("xatlas", mesh, o, "xatlas");
+    if(!o.xatlas_only)
+      run_sweep(mesh, o, r);
     std::cerr << mesh.name << ": ours " << r.ours.process.status() << ", xatlas " << r.xatlas.process.status()
               << " (" << fixed(r.xatlas.process.seconds, 2) << " s; measured in "
               << fixed(r.xatlas.metrics.seconds + r.ours.metrics.seconds, 2) << " s)\n";
@@ -1864,6 +2015,11 @@ int main_benchmark(const Options& o)
     print_side(r.mesh, r.xatlas);
   }
   print_summary(rows, o);
+  if(!o.xatlas_only)
+  {
+    print_sweep_table(rows);
+    print_bound_targets(rows);
+  }
   return 0;
 }
 

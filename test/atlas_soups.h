@@ -172,6 +172,57 @@ inline Soup sheared_quad_torus(int n)
   return s;
 }
 
+
+// A developable strip wound 1.5 turns around a cone: the cone over the curve of unit
+// directions d(t) = (cos t, sin t, 0.15 t) / |.| for t in [0, 3 pi] (a helix seen from its
+// axis' origin: the apex), between distances 1 and 2 from the apex; n quads along the strip,
+// 2 across, each planar (its four corners on two rays from the apex). Its flattening keeps the
+// distances to the apex as radii and unrolls the curve of directions to its length, about 7.7
+// radians: more than a turn, so the one-chart flattening overlaps itself.
+inline Soup strip_around_a_cone(int n)
+{
+  Soup s;
+  for(int i = 0; i <= n; ++i)
+  {
+    const double t = 3. * M_PI * i / n;
+    const Eigen::Vector3d d = Eigen::Vector3d(std::cos(t), std::sin(t), 0.15 * t).normalized();
+    for(double r : {1., 1.5, 2.})
+      s.points.push_back({{r * d.x(), r * d.y(), r * d.z()}});
+  }
+  for(std::size_t i = 0; i < std::size_t(n); ++i)
+    for(std::size_t k = 0; k < 2; ++k)
+      s.faces.push_back({3 * i + k, 3 * i + k + 1, 3 * i + k + 4, 3 * i + k + 3});
+  return s;
+}
+
+// The unit cube, each side an n x n grid of quads (turning counterclockwise seen from
+// outside); the sides' shared points are listed once per side (the repair merges them).
+inline Soup cube_of_quads(int n)
+{
+  Soup s;
+  for(int axis = 0; axis < 3; ++axis)
+    for(int sign = 0; sign < 2; ++sign)
+    {
+      Eigen::Vector3d normal = Eigen::Vector3d::Zero(), u = normal, v = normal;
+      normal[axis] = sign ? 1. : -1.;
+      u[(axis + 1) % 3] = 1.;
+      v = normal.cross(u);
+      const std::size_t first = s.points.size();
+      for(int j = 0; j <= n; ++j)
+        for(int i = 0; i <= n; ++i)
+        {
+          const Eigen::Vector3d p = Eigen::Vector3d::Constant(0.5) + 0.5 * normal + (double(i) / n - 0.5) * u +
+                                    (double(j) / n - 0.5) * v;
+          s.points.push_back({{p.x(), p.y(), p.z()}});
+        }
+      auto id = [first, n](int i, int j) { return first + std::size_t(j * (n + 1) + i); };
+      for(int j = 0; j < n; ++j)
+        for(int i = 0; i < n; ++i)
+          s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
 } // namespace mbp_test
 
 #endif // MBP_TEST_ATLAS_SOUPS_H

@@ -65,6 +65,16 @@ Atlas_output atlas_of(const Points& points, const Polygons& polygons, const SMP:
   return out;
 }
 
+// The options of the previous issue's atlas: one chart per component wherever its map is
+// one-to-one.
+SMP::Atlas_options without_bounds()
+{
+  SMP::Atlas_options options;
+  options.max_area_spread = options.max_angle_distortion = std::numeric_limits<double>::infinity();
+  options.min_compactness = 0.;
+  return options;
+}
+
 template <class P>
 Eigen::Vector3d at(const P& p)
 {
@@ -306,7 +316,7 @@ BOOST_AUTO_TEST_CASE(quads_and_a_pentagon)
 BOOST_AUTO_TEST_CASE(seams_keep_polygons_whole)
 {
   const Soup s = mbp_test::sheared_quad_torus(16);
-  const Atlas_output a = check_soup(s, false);  // non-planar quads
+  const Atlas_output a = check_soup(s, false, without_bounds());  // non-planar quads; one chart
   BOOST_CHECK_EQUAL(a.report.repair.triangulated_polygons, s.faces.size());
   BOOST_CHECK_EQUAL(a.report.charts.size(), 1u);
   BOOST_CHECK_EQUAL(a.report.charts[0].flattening, SMP::SEAMED_CHART);
@@ -387,6 +397,118 @@ BOOST_AUTO_TEST_CASE(face_graph_form)
 {
   check_face_graph_form<CGAL::Surface_mesh<Point_3> >(mbp_test::quads_and_a_pentagon_soup());
   check_face_graph_form<CGAL::Polyhedron_3<K> >(mbp_test::quads_and_a_pentagon_soup());
+}
+
+// ------------------------------------------- core tier: charts within the bounds (issue 23)
+
+namespace {
+
+// The largest |log(UV area / (3D area x density^2))| over the polygons of nonzero 3D area:
+// 0 when every polygon keeps its area at the atlas' one density (planar polygons).
+template <class Points, class Polygons>
+double largest_area_distortion(const Points& points, const Polygons& polygons, const Atlas_output& a)
+{
+  const double density = a.report.texel_density * a.report.texel_density;
+  double largest = 0.;
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    const double area_3d = polygon_area(points, polygons[p]);
+    if(area_3d > 1e-12)
+      largest = (std::max)(largest, std::abs(std::log(std::abs(twice_uv_area(a.uvs[p])) / 2. / (area_3d * density))));
+  }
+  return largest;
+}
+
+// The largest |UV angle - 3D angle| over the corners of the polygons (planar polygons).
+template <class Points, class Polygons>
+double largest_angle_change(const Points& points, const Polygons& polygons, const Atlas_output& a)
+{
+  double largest = 0.;
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+  {
+    const std::size_t n = polygons[p].size();
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      const Eigen::Vector3d o = at(points[polygons[p][j]]);
+      const Eigen::Vector3d e = at(points[polygons[p][(j + 1) % n]]) - o, g = at(points[polygons[p][(j + n - 1) % n]]) - o;
+      const Eigen::Vector2d uo(a.uvs[p][j].x(), a.uvs[p][j].y());
+      const Eigen::Vector2d ue = Eigen::Vector2d(a.uvs[p][(j + 1) % n].x(), a.uvs[p][(j + 1) % n].y()) - uo;
+      const Eigen::Vector2d ug = Eigen::Vector2d(a.uvs[p][(j + n - 1) % n].x(), a.uvs[p][(j + n - 1) % n].y()) - uo;
+      const double angle_3d = std::atan2(e.cross(g).norm(), e.dot(g));
+      const double angle_uv = std::atan2(std::abs(ue.x() * ug.y() - ue.y() * ug.x()), ue.dot(ug));
+      largest = (std::max)(largest, std::abs(angle_3d - angle_uv));
+    }
+  }
+  return largest;
+}
+
+} // namespace
+
+// A developable strip wound 1.5 turns around a cone unrolls to more than a turn: one chart
+// cannot be both one-to-one and undistorted (without bounds: one chart, one-to-one, its area
+// distorted). Within the default bounds: one-to-one, and every quad keeps its shape and its
+// area (at most two charts, each less than a turn).
+BOOST_AUTO_TEST_CASE(strip_around_a_cone)
+{
+  const Soup s = mbp_test::strip_around_a_cone(120);
+  const Atlas_output one = check_soup(s, true, without_bounds());
+  BOOST_CHECK_EQUAL(one.report.charts.size(), 1u);
+  BOOST_CHECK_GT(largest_area_distortion(s.points, s.faces, one), 0.1);
+  const Atlas_output a = check_soup(s);
+  BOOST_TEST_MESSAGE("strip around a cone: " << a.report.charts.size() << " charts, " << a.report.splits
+                     << " splits; largest area distortion " << largest_area_distortion(s.points, s.faces, a)
+                     << ", angle change " << largest_angle_change(s.points, s.faces, a) << " (one chart: "
+                     << largest_area_distortion(s.points, s.faces, one) << ", "
+                     << largest_angle_change(s.points, s.faces, one) << ")");
+  BOOST_CHECK_LE(a.report.charts.size(), 2u);
+  BOOST_CHECK_LT(largest_area_distortion(s.points, s.faces, a), 1e-6);
+  BOOST_CHECK_LT(largest_angle_change(s.points, s.faces, a), 1e-6);
+  BOOST_CHECK_EQUAL(clockwise_polygons(s.points, s.faces, a), 0u);
+}
+
+// A cube: at most six charts, each undistorted (every quad keeps its shape and its area).
+BOOST_AUTO_TEST_CASE(cube_in_flat_charts)
+{
+  const Soup s = mbp_test::cube_of_quads(4);
+  for(SMP::Atlas_split split : {SMP::SPLIT_BY_NORMALS, SMP::SPLIT_BY_SCALE})
+  {
+    SMP::Atlas_options options;
+    options.split = split;
+    const Atlas_output a = check_soup(s, true, options);
+    BOOST_TEST_MESSAGE("cube, split " << int(split) << ": " << a.report.charts.size() << " charts, largest area distortion "
+                       << largest_area_distortion(s.points, s.faces, a));
+    BOOST_CHECK_LE(a.report.charts.size(), 6u);
+    BOOST_CHECK_LT(largest_area_distortion(s.points, s.faces, a), 1e-6);
+    BOOST_CHECK_LT(largest_angle_change(s.points, s.faces, a), 1e-6);
+    for(const SMP::Atlas_chart_report& c : a.report.charts)
+      BOOST_CHECK(c.area_spread <= options.max_area_spread && c.angle_distortion <= options.max_angle_distortion);
+  }
+}
+
+// The bounds hold chart by chart on a curved closed surface, and a tighter bound gives more
+// charts of lower spread; bad bounds are refused.
+BOOST_AUTO_TEST_CASE(bounds_are_kept)
+{
+  const Soup s = mbp_test::sheared_quad_torus(24);
+  std::size_t previous_charts = 0;
+  for(double bound : {0.4, 0.1, 0.03})
+  {
+    SMP::Atlas_options options;
+    options.max_area_spread = bound;
+    const Atlas_output a = check_soup(s, false, options);
+    for(const SMP::Atlas_chart_report& c : a.report.charts)
+      BOOST_CHECK_LE(c.area_spread, bound);
+    BOOST_CHECK_GE(a.report.charts.size(), previous_charts);
+    previous_charts = a.report.charts.size();
+  }
+  std::vector<std::vector<Point_2> > uvs;
+  std::vector<std::size_t> charts;
+  SMP::Atlas_options bad;
+  bad.max_area_spread = std::numeric_limits<double>::quiet_NaN();
+  BOOST_CHECK_EQUAL(SMP::compute_atlas_of_polygon_soup(s.points, s.faces, uvs, charts, bad), SMP::ERROR_WRONG_PARAMETER);
+  bad = SMP::Atlas_options();
+  bad.min_compactness = -1.;
+  BOOST_CHECK_EQUAL(SMP::compute_atlas_of_polygon_soup(s.points, s.faces, uvs, charts, bad), SMP::ERROR_WRONG_PARAMETER);
 }
 
 // ----------------------------------------------------------- core tier: CGAL's data meshes

@@ -22,19 +22,22 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
-/// How a chart that misses the distortion bound is split in two (`Atlas_options::split`).
-/// Both grow two regions from two seed faces over the chart's faces, each face going to the
-/// region that reaches it at the lower cost; faces joined across smooth edges (dihedral angle
-/// below 30 degrees) move together when the chart has sharp edges, so that a planar or smooth
-/// face of a CAD part is never cut.
+/// How a chart that misses the distortion bound is split in two (`Atlas_options::split`):
+/// each face goes to the nearer of two seed faces, in a distance where a step between adjacent
+/// faces costs the change of a feature plus the distance of their centroids over the square
+/// root of the chart's area. When the chart has sharp edges (dihedral angle of 30 degrees or
+/// more), faces joined across smooth edges move together, so that a flat or smooth face of a
+/// CAD part is never cut.
 enum Atlas_split
 {
-  /// the seeds are the two most different normals; a face's cost is 1 - cos of the angle
-  /// between its normal and its seed's (segmentation by normal cones, as xatlas and D-charts)
+  /// the feature is the normal (a step costs the angle between the normals); the seeds are
+  /// two faces farthest apart, so that the cut falls where the surface turns the most between
+  /// them (segmentation by normals, as xatlas's and D-charts' region growing)
   SPLIT_BY_NORMALS,
-  /// the seeds are the faces of the smallest and of the largest conformal scale factor of the
-  /// chart's map (log of UV area over 3D area); a face's cost is the difference of its scale
-  /// factor and its seed's (cuts where the scale factor is extreme)
+  /// the feature is the log of the conformal scale factor of the chart's map (UV area over 3D
+  /// area); the seeds are the faces of the smallest and of the largest scale, so that the cut
+  /// falls between the extremes (as Boundary First Flattening's cones, placed where the scale
+  /// factor is extreme)
   SPLIT_BY_SCALE
 };
 

@@ -10,15 +10,18 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_ATLAS_CHART_SPLIT_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_ATLAS_CHART_SPLIT_H
 
-// The split of a chart that misses the distortion bound (Atlas_options): two regions grown
-// from two seeds over the chart's faces, each face to the region that reaches it at the lower
-// cost (ties: fewer steps from the seed). The cost is a distance between per-face features:
-// the unit normal (Atlas_split SPLIT_BY_NORMALS) or the log of the map's area scale
-// (SPLIT_BY_SCALE). When the chart has sharp edges, its faces are first grouped into smooth
-// patches (joined across edges of dihedral angle below 30 degrees) that move together, so
-// that a flat or smooth face of a CAD part is never cut. Written here because no library
-// segments a face set this way (CGAL's Surface_mesh_segmentation splits by shape diameter,
-// not by a distortion feature, and not in two).
+// The split of a chart that misses the distortion bound (Atlas_options): each face goes to the
+// nearer of two seeds (a weighted Voronoi split, by Dijkstra's algorithm over the faces). A
+// step between two adjacent faces costs the change of a feature plus the distance of their
+// centroids over the square root of the chart's area: the angle between their normals
+// (Atlas_split SPLIT_BY_NORMALS: the seeds are the two faces farthest apart in this distance,
+// so that the cut falls where the surface turns the most between them) or the difference of
+// the log area scale of the chart's map (SPLIT_BY_SCALE: the seeds are the faces of the
+// smallest and the largest scale, so that the cut falls between the extremes). When the chart
+// has sharp edges, its faces are first grouped into smooth patches (joined across edges of
+// dihedral angle below 30 degrees) that move together, so that a flat or smooth face of a CAD
+// part is never cut. Written here because no library segments a face set this way (CGAL's
+// Surface_mesh_segmentation splits by shape diameter, not by a distortion feature).
 
 #include <CGAL/Surface_mesh_parameterization/Atlas_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/charts.h>
@@ -31,8 +34,9 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <limits>
+#include <numeric>
 #include <queue>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -40,83 +44,105 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-// The nodes a split moves whole (smooth patches, or single faces) and their adjacency (CSR).
-struct Split_graph
+// Per face of a subset: its area, centroid, unit normal and split feature (the normal, or in
+// x the log area scale of the chart's map).
+struct Split_faces
 {
-  std::vector<std::size_t> node_of;      // per face of the subset
-  std::vector<std::size_t> offsets, adjacent;
-  std::vector<Eigen::Vector3d> feature;  // per node: the area-weighted mean of its faces'
-  std::size_t nodes = 0;
+  std::vector<double> area;
+  std::vector<Eigen::Vector3d> centroid, normal, feature;
 };
 
-// The per-face features of a subset: unit normals, or (x) the log area scale of the chart's map.
-inline std::vector<Eigen::Vector3d> face_features(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
-                                                  const Atlas_chart* map, std::vector<double>& area)
+inline Split_faces split_faces(const Atlas_triangles& t, const std::vector<std::size_t>& faces, const Atlas_chart* map)
 {
-  std::vector<Eigen::Vector3d> feature(faces.size(), Eigen::Vector3d::Zero());
-  area.assign(faces.size(), 0.);
+  Split_faces d;
+  d.area.assign(faces.size(), 0.);
+  d.centroid.assign(faces.size(), Eigen::Vector3d::Zero());
+  d.normal = d.feature = d.centroid;
   for(std::size_t i = 0; i < faces.size(); ++i)
   {
     const Face_indices& v = t.faces[faces[i]];
-    const Eigen::Vector3d n = (t.points[std::size_t(v[1])] - t.points[std::size_t(v[0])])
-                                .cross(t.points[std::size_t(v[2])] - t.points[std::size_t(v[0])]);
-    area[i] = 0.5 * n.norm();
-    if(!(area[i] > 0.))
+    const Eigen::Vector3d& a = t.points[std::size_t(v[0])], b = t.points[std::size_t(v[1])], c = t.points[std::size_t(v[2])];
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    d.area[i] = 0.5 * n.norm();
+    d.centroid[i] = (a + b + c) / 3.;
+    if(!(d.area[i] > 0.))
       continue;
+    d.normal[i] = n / n.norm();
+    d.feature[i] = d.normal[i];
     if(map == nullptr)
-    {
-      feature[i] = n / n.norm();
       continue;
-    }
     const Eigen::Vector2d e = map->corners[i][1] - map->corners[i][0], g = map->corners[i][2] - map->corners[i][0];
     const double uv_area = 0.5 * std::abs(e.x() * g.y() - e.y() * g.x());
-    if(uv_area > 0.)
-      feature[i].x() = std::log(uv_area / area[i]);
+    d.feature[i] = Eigen::Vector3d((uv_area > 0.) ? std::log(uv_area / d.area[i]) : 0., 0., 0.);
   }
-  return feature;
+  return d;
 }
 
-// Groups the faces into smooth patches (one node per face when there is one patch) and
-// gives each node the area-weighted mean feature of its faces.
-inline Split_graph split_graph(const std::vector<std::array<int, 3> >& neighbors, const std::vector<Eigen::Vector3d>& normal,
-                               const std::vector<Eigen::Vector3d>& feature, const std::vector<double>& area)
+// The nodes a split moves whole (smooth patches, or single faces), their adjacency (CSR) and
+// their area-weighted mean features and centroids.
+struct Split_graph
+{
+  std::vector<std::size_t> node_of;  // per face of the subset
+  std::vector<std::size_t> offsets, adjacent;
+  std::vector<Eigen::Vector3d> feature, centroid;
+  double length = 1.;                // the unit of the centroids' distances: sqrt(area)
+  std::size_t nodes = 0;
+};
+
+// The node of each face: its smooth patch when the subset has sharp edges, itself otherwise.
+inline std::size_t group_into_patches(const std::vector<std::array<int, 3> >& neighbors, const Split_faces& d,
+                                      std::vector<std::size_t>& node_of)
 {
   const double cos_sharp = std::cos(CGAL_PI / 6.);
   Union_find patches(neighbors.size());
   for(std::size_t f = 0; f < neighbors.size(); ++f)
     for(int g : neighbors[f])
-      if(g >= 0 && normal[f].dot(normal[std::size_t(g)]) >= cos_sharp)
+      if(g >= 0 && d.normal[f].dot(d.normal[std::size_t(g)]) >= cos_sharp)
         patches.unite(f, std::size_t(g));
-  Split_graph s;
-  s.node_of.assign(neighbors.size(), neighbors.size());
   std::vector<std::size_t> root_node(neighbors.size(), neighbors.size());
+  std::size_t nodes = 0;
+  node_of.assign(neighbors.size(), 0);
   for(std::size_t f = 0; f < neighbors.size(); ++f)
   {
     std::size_t& node = root_node[patches.find(f)];
     if(node == neighbors.size())
-      node = s.nodes++;
-    s.node_of[f] = node;
+      node = nodes++;
+    node_of[f] = node;
   }
-  if(s.nodes == 1)  // one smooth patch: its faces move one by one
-  {
-    s.nodes = neighbors.size();
-    for(std::size_t f = 0; f < neighbors.size(); ++f)
-      s.node_of[f] = f;
-  }
+  if(nodes > 1)
+    return nodes;
+  for(std::size_t f = 0; f < neighbors.size(); ++f)  // one smooth patch: its faces move one by one
+    node_of[f] = f;
+  return neighbors.size();
+}
+
+inline Split_graph split_graph(const std::vector<std::array<int, 3> >& neighbors, const Split_faces& d)
+{
+  Split_graph s;
+  s.nodes = group_into_patches(neighbors, d, s.node_of);
   s.feature.assign(s.nodes, Eigen::Vector3d::Zero());
+  s.centroid = s.feature;
   std::vector<double> weight(s.nodes, 0.);
   std::vector<std::pair<std::size_t, std::size_t> > links;
   for(std::size_t f = 0; f < neighbors.size(); ++f)
   {
-    s.feature[s.node_of[f]] += area[f] * feature[f];
-    weight[s.node_of[f]] += area[f];
+    const std::size_t n = s.node_of[f];
+    s.feature[n] += d.area[f] * d.feature[f];
+    s.centroid[n] += d.area[f] * d.centroid[f];
+    weight[n] += d.area[f];
     for(int g : neighbors[f])
-      if(g >= 0 && s.node_of[std::size_t(g)] != s.node_of[f])
-        links.emplace_back(s.node_of[f], s.node_of[std::size_t(g)]);
+      if(g >= 0 && s.node_of[std::size_t(g)] != n)
+        links.emplace_back(n, s.node_of[std::size_t(g)]);
   }
+  double area = 0.;
   for(std::size_t n = 0; n < s.nodes; ++n)
     if(weight[n] > 0.)
+    {
       s.feature[n] /= weight[n];
+      s.centroid[n] /= weight[n];
+      area += weight[n];
+    }
+  s.length = (area > 0.) ? std::sqrt(area) : 1.;
   std::sort(links.begin(), links.end());
   links.erase(std::unique(links.begin(), links.end()), links.end());
   s.offsets.assign(s.nodes + 1, 0);
@@ -129,76 +155,76 @@ inline Split_graph split_graph(const std::vector<std::array<int, 3> >& neighbors
   return s;
 }
 
-// The distance between two features: 1 - cos of the angle between normals, or the difference
-// of log scales.
-inline double feature_distance(Atlas_split split, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+// The cost of a step between adjacent nodes: the change of the feature (the angle between the
+// normals, or the difference of log scales) plus the distance of the centroids over sqrt(area).
+inline double step_cost(Atlas_split split, const Split_graph& s, std::size_t a, std::size_t b)
 {
-  if(split == SPLIT_BY_SCALE)
-    return std::abs(a.x() - b.x());
-  const double na = a.norm(), nb = b.norm();
-  return (na > 0. && nb > 0.) ? 1. - a.dot(b) / (na * nb) : 1.;
+  const Eigen::Vector3d& fa = s.feature[a];
+  const Eigen::Vector3d& fb = s.feature[b];
+  const double na = fa.norm(), nb = fb.norm();
+  const double change = (split == SPLIT_BY_SCALE) ? std::abs(fa.x() - fb.x())
+                        : (na > 0. && nb > 0.)    ? std::acos((std::max)(-1., (std::min)(1., fa.dot(fb) / (na * nb))))
+                                                  : 0.;
+  return change + (s.centroid[a] - s.centroid[b]).norm() / s.length;
 }
 
-// The node farthest (by feature) from `from`; ties to the lowest index.
-inline std::size_t farthest_node(Atlas_split split, const Split_graph& s, const Eigen::Vector3d& from)
+// Dijkstra's algorithm from `seeds`: the distance of each node to the nearest seed, and which
+// seed that is (`nearest`).
+inline std::vector<double> seed_distances(Atlas_split split, const Split_graph& s, const std::vector<std::size_t>& seeds,
+                                          std::vector<int>& nearest)
 {
-  std::size_t best = 0;
-  for(std::size_t n = 1; n < s.nodes; ++n)
-    if(feature_distance(split, s.feature[n], from) > feature_distance(split, s.feature[best], from))
-      best = n;
-  return best;
-}
-
-// The side (0 or 1) of each node: two regions grown from seeds a and b, best first.
-inline std::vector<int> grow_two_regions(Atlas_split split, const Split_graph& s, std::size_t a, std::size_t b)
-{
-  typedef std::tuple<double, std::size_t, std::size_t, int> Step;  // cost, steps, node, side
+  typedef std::pair<double, std::size_t> Step;
   std::priority_queue<Step, std::vector<Step>, std::greater<Step> > queue;
-  std::vector<int> side(s.nodes, -1);
-  queue.emplace(0., 0, a, 0);
-  queue.emplace(0., 0, b, 1);
-  const std::array<std::size_t, 2> seed = {{a, b}};
+  std::vector<double> distance(s.nodes, std::numeric_limits<double>::infinity());
+  nearest.assign(s.nodes, -1);
+  for(std::size_t i = 0; i < seeds.size(); ++i)
+    if(nearest[seeds[i]] < 0)
+    {
+      distance[seeds[i]] = 0.;
+      nearest[seeds[i]] = int(i);
+      queue.emplace(0., seeds[i]);
+    }
   while(!queue.empty())
   {
     const Step step = queue.top();
     queue.pop();
-    const std::size_t node = std::get<2>(step);
-    const int region = std::get<3>(step);
-    if(side[node] >= 0)
+    if(step.first > distance[step.second])
       continue;
-    side[node] = region;
-    for(std::size_t i = s.offsets[node]; i < s.offsets[node + 1]; ++i)
-      if(side[s.adjacent[i]] < 0)
-        queue.emplace(feature_distance(split, s.feature[s.adjacent[i]], s.feature[seed[std::size_t(region)]]),
-                      std::get<1>(step) + 1, s.adjacent[i], region);
+    for(std::size_t i = s.offsets[step.second]; i < s.offsets[step.second + 1]; ++i)
+    {
+      const std::size_t next = s.adjacent[i];
+      const double d = step.first + step_cost(split, s, step.second, next);
+      if(d < distance[next])
+      {
+        distance[next] = d;
+        nearest[next] = nearest[step.second];
+        queue.emplace(d, next);
+      }
+    }
   }
-  return side;
+  return distance;
 }
 
-// The seeds: the node farthest from the mean feature and the node farthest from it; when all
-// features agree, the node farthest in steps.
+// The seeds: the two farthest apart nodes (normals: from any node the farthest, then the
+// farthest from it), or the nodes of the smallest and the largest scale.
 inline std::array<std::size_t, 2> split_seeds(Atlas_split split, const Split_graph& s)
 {
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for(const Eigen::Vector3d& f : s.feature)
-    mean += f / double(s.nodes);
-  const std::size_t a = farthest_node(split, s, mean);
-  std::size_t b = farthest_node(split, s, s.feature[a]);
-  if(feature_distance(split, s.feature[b], s.feature[a]) <= 0.)  // the last node reached breadth first
+  if(split == SPLIT_BY_SCALE)
   {
-    std::vector<std::size_t> queue(1, a);
-    std::vector<char> seen(s.nodes, 0);
-    seen[a] = 1;
-    for(std::size_t q = 0; q < queue.size(); ++q)
-      for(std::size_t i = s.offsets[queue[q]]; i < s.offsets[queue[q] + 1]; ++i)
-        if(!seen[s.adjacent[i]])
-        {
-          seen[s.adjacent[i]] = 1;
-          queue.push_back(s.adjacent[i]);
-        }
-    b = queue.back();
+    auto by_scale = [&s](std::size_t a, std::size_t b) { return s.feature[a].x() < s.feature[b].x(); };
+    std::vector<std::size_t> order(s.nodes);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    const auto extremes = std::minmax_element(order.begin(), order.end(), by_scale);
+    if(*extremes.first != *extremes.second)
+      return {{*extremes.first, *extremes.second}};
   }
-  return {{a, b}};
+  std::vector<int> nearest;
+  auto farthest = [&](std::size_t from) {
+    const std::vector<double> d = seed_distances(SPLIT_BY_NORMALS, s, {from}, nearest);
+    return std::size_t(std::max_element(d.begin(), d.end()) - d.begin());
+  };
+  const std::size_t a = farthest(0);
+  return {{a, farthest(a)}};
 }
 
 // A connected face subset that misses the bound split in two; `map` is its one-to-one map
@@ -209,12 +235,11 @@ inline std::array<std::vector<std::size_t>, 2> split_for_bound(const Atlas_trian
 {
   if(map == nullptr)
     split = SPLIT_BY_NORMALS;
-  std::vector<double> area;
-  const std::vector<Eigen::Vector3d> normal = face_features(t, faces, nullptr, area);
-  const std::vector<Eigen::Vector3d> feature = (split == SPLIT_BY_SCALE) ? face_features(t, faces, map, area) : normal;
-  const Split_graph s = split_graph(subset_neighbors(t, faces), normal, feature, area);
+  const Split_faces d = split_faces(t, faces, split == SPLIT_BY_SCALE ? map : nullptr);
+  const Split_graph s = split_graph(subset_neighbors(t, faces), d);
   const std::array<std::size_t, 2> seed = split_seeds(split, s);
-  const std::vector<int> node_side = grow_two_regions(split, s, seed[0], seed[1]);
+  std::vector<int> node_side;
+  seed_distances(split, s, {seed[0], seed[1]}, node_side);
   std::vector<int> side(faces.size());
   for(std::size_t i = 0; i < faces.size(); ++i)
     side[i] = std::max(node_side[s.node_of[i]], 0);
