@@ -22,8 +22,8 @@
 //   --mesh=FILE     also this mesh file (repeatable; e.g. a refined 1M-face scan)
 //   --xatlas-only   run xatlas only (ours: "not run")
 //   --sweep=B,...   also run ours at each of these bounds of --max-area-spread (e.g.
-//                   0.05,0.1,0.4,inf). Ours always runs three times per mesh besides: at its
-//                   defaults, with every bound lifted (--max-area-spread=inf
+//                   0.05,0.1,0.4,inf). Ours always runs four times per mesh besides: at its
+//                   defaults, with --split=scale, with every bound lifted (--max-area-spread=inf
 //                   --max-angle-distortion=inf --min-compactness=0: the previous issue's one
 //                   chart per component) and at xatlas's own area spread on the mesh (rounded
 //                   up to 4 decimals); the "Bounds" table and the issue 23 summary compare them
@@ -1364,6 +1364,7 @@ struct Row
   Mesh_entry mesh;
   Side ours, xatlas;
   Sweep_run one_chart, at_xatlas;  // at_xatlas: the bound set to xatlas's area spread
+  Sweep_run by_scale;              // the default bounds, split by the conformal scale
   std::vector<Sweep_run> sweep;
 };
 
@@ -1403,6 +1404,8 @@ std::vector<std::string> bound_arguments(const std::string& bound)
 {
   if(bound == "one chart")
     return {"--max-area-spread=inf", "--max-angle-distortion=inf", "--min-compactness=0"};
+  if(bound == "split by scale")
+    return {"--split=scale"};
   return {"--max-area-spread=" + bound};
 }
 
@@ -1415,6 +1418,7 @@ Sweep_run sweep_run(const Mesh_entry& mesh, const Options& o, const std::string&
 void run_sweep(const Mesh_entry& mesh, const Options& o, Row& r)
 {
   r.one_chart = sweep_run(mesh, o, "one chart", "one-chart");
+  r.by_scale = sweep_run(mesh, o, "split by scale", "by-scale");
   if(r.xatlas.measured)
     r.at_xatlas = sweep_run(mesh, o, fixed(std::max(std::ceil(1e4 * r.xatlas.metrics.area_spread), 1.) / 1e4, 4),
                             "at-xatlas");
@@ -1614,6 +1618,7 @@ void print_sweep_table(const std::vector<Row>& rows)
     print_sweep_side(r.mesh, "xatlas", r.xatlas);
     print_sweep_side(r.mesh, "ours (default)", r.ours);
     print_sweep_side(r.mesh, "ours, one chart", r.one_chart.side);
+    print_sweep_side(r.mesh, "ours, --split=scale", r.by_scale.side);
     if(r.at_xatlas.side.process.ran)
       print_sweep_side(r.mesh, "ours <= xatlas's spread " + r.at_xatlas.bound, r.at_xatlas.side);
     for(const Sweep_run& w : r.sweep)

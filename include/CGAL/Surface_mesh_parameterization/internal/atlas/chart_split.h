@@ -89,7 +89,9 @@ struct Split_graph
   std::size_t nodes = 0;
 };
 
-// The node of each face: its smooth patch when the subset has sharp edges, itself otherwise.
+// The node of each face: its smooth patch when the subset has sharp edges, itself otherwise
+// or when its patch holds half the area or more (a patch that big must itself be split, and
+// keeping it whole would only peel small patches off it, one split at a time).
 inline std::size_t group_into_patches(const std::vector<std::array<int, 3> >& neighbors, const Split_faces& d,
                                       std::vector<std::size_t>& node_of)
 {
@@ -99,21 +101,30 @@ inline std::size_t group_into_patches(const std::vector<std::array<int, 3> >& ne
     for(int g : neighbors[f])
       if(g >= 0 && d.normal[f].dot(d.normal[std::size_t(g)]) >= cos_sharp)
         patches.unite(f, std::size_t(g));
+  std::vector<double> patch_area(neighbors.size(), 0.);
+  double area = 0.;
+  for(std::size_t f = 0; f < neighbors.size(); ++f)
+  {
+    patch_area[patches.find(f)] += d.area[f];
+    area += d.area[f];
+  }
   std::vector<std::size_t> root_node(neighbors.size(), neighbors.size());
   std::size_t nodes = 0;
   node_of.assign(neighbors.size(), 0);
   for(std::size_t f = 0; f < neighbors.size(); ++f)
   {
-    std::size_t& node = root_node[patches.find(f)];
+    const std::size_t root = patches.find(f);
+    if(patch_area[root] >= 0.5 * area)
+    {
+      node_of[f] = nodes++;
+      continue;
+    }
+    std::size_t& node = root_node[root];
     if(node == neighbors.size())
       node = nodes++;
     node_of[f] = node;
   }
-  if(nodes > 1)
-    return nodes;
-  for(std::size_t f = 0; f < neighbors.size(); ++f)  // one smooth patch: its faces move one by one
-    node_of[f] = f;
-  return neighbors.size();
+  return nodes;
 }
 
 inline Split_graph split_graph(const std::vector<std::array<int, 3> >& neighbors, const Split_faces& d)
