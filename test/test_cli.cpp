@@ -2487,6 +2487,48 @@ BOOST_AUTO_TEST_CASE(atlas_of_soups_with_defects)
     }
 }
 
+// The charts' bounds from the command line: the strip wound 1.5 turns around a cone cannot be
+// one undistorted chart. By default every chart is within the bounds the JSON echoes (and the
+// summary names); with every bound lifted it is one chart (the JSON writes an infinite bound
+// as null), distorted beyond the default bounds; --split=scale is echoed and kept too.
+BOOST_AUTO_TEST_CASE(charts_within_bounds)
+{
+  Scratch scratch;
+  const mbp_test::Soup strip = mbp_test::strip_around_a_cone(60);
+  scratch.write("strip.off", exact_off_text(strip));
+  for(const std::string split : {"normals", "scale"})
+    BOOST_TEST_CONTEXT(split)
+    {
+      const Run r = scratch.run({"strip.off", "strip.obj", "--json", "--split=" + split});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      const boost::property_tree::ptree j = parse_json(r.out);
+      check_atlas(read_atlas_obj(scratch.work / "strip.obj"), j, strip);
+      BOOST_TEST(j.get<std::string>("bounds.split") == split);
+      BOOST_TEST(j.get<double>("bounds.max_area_spread") == 0.2);
+      BOOST_TEST(j.get<std::size_t>("chart_count") >= 2u);
+      BOOST_TEST(j.get<std::size_t>("splits") >= 1u);
+      for(const auto& c : j.get_child("charts"))
+      {
+        BOOST_TEST(c.second.get<double>("area_spread") <= 0.2);
+        BOOST_TEST(c.second.get<double>("angle_distortion") <= 0.05);
+      }
+    }
+  const Run one = scratch.run({"strip.off", "one.obj", "--json", "--max-area-spread=inf", "--max-angle-distortion=inf",
+                               "--min-compactness=0"});
+  BOOST_REQUIRE_EQUAL(one.code, 0);
+  const boost::property_tree::ptree j = parse_json(one.out);
+  BOOST_TEST(j.get<std::size_t>("chart_count") == 1u);
+  BOOST_TEST(j.get<std::string>("bounds.max_area_spread") == "null");
+  const boost::property_tree::ptree& chart = j.get_child("charts").begin()->second;
+  BOOST_TEST((chart.get<double>("area_spread") > 0.2 || chart.get<double>("angle_distortion") > 0.05),
+             "the one chart is within the default bounds: area spread " << chart.get<double>("area_spread")
+                                                                         << ", angle distortion "
+                                                                         << chart.get<double>("angle_distortion"));
+  const Run summary = scratch.run({"strip.off", "summary.obj", "--max-area-spread=0.3"});
+  BOOST_REQUIRE_EQUAL(summary.code, 0);
+  BOOST_TEST(contains(summary.out, "| bounds: area spread <= 0.3 (largest "), summary.out);
+}
+
 BOOST_AUTO_TEST_CASE(default_run_is_an_atlas)
 {
   // no option: the atlas; the grid is a disk: one chart
@@ -2621,6 +2663,13 @@ BOOST_AUTO_TEST_CASE(atlas_options_and_failures)
     {{"two.off", "--resolution"}, "option --resolution needs a value"},
     {{"two.off", "--atlas=yes"}, "option --atlas takes no value"},
     {{"two.off", "--single-chart", "--single-chart"}, "option --single-chart is given twice"},
+    {{"two.off", "--max-area-spread=-1"}, "value -1 of --max-area-spread is out of range (expected a number from 0 to inf)"},
+    {{"two.off", "--max-angle-distortion=nan"}, "bad value 'nan' of --max-angle-distortion"},
+    {{"two.off", "--max-area-spread=0.1x"}, "bad value '0.1x' of --max-area-spread"},
+    {{"two.off", "--min-compactness=2"}, "value 2 of --min-compactness is out of range (expected a number from 0 to 1)"},
+    {{"two.off", "--split=curvature"}, "unknown value 'curvature' of --split (expected normals or scale)"},
+    {{"two.off", "--single-chart", "--max-area-spread=0.1"},
+     "option --max-area-spread (of the atlas) cannot be combined with --single-chart"},
   };
   for(const auto& u : usage)
     BOOST_TEST_CONTEXT(u.first.back())
