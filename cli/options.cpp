@@ -88,7 +88,7 @@ const char* const usage_options =
     "                     inf: one chart per component wherever its map is one-to-one). A\n"
     "                     chart that misses a bound is split in two, recursively\n"
     "  --max-angle-distortion=X\n"
-    "                     the bound on each chart's angle distortion (the paper's; default 0.05)\n"
+    "                     the bound on each chart's angle distortion (the paper's; default 0.2)\n"
     "  --min-compactness=X\n"
     "                     the bound on each chart's compactness: its UV area over the square of\n"
     "                     its bounding box's longer side (default 0.125, 0 to 1; 0 keeps long\n"

@@ -2510,7 +2510,7 @@ BOOST_AUTO_TEST_CASE(charts_within_bounds)
       for(const auto& c : j.get_child("charts"))
       {
         BOOST_TEST(c.second.get<double>("area_spread") <= 0.2);
-        BOOST_TEST(c.second.get<double>("angle_distortion") <= 0.05);
+        BOOST_TEST(c.second.get<double>("angle_distortion") <= 0.2);
       }
     }
   const Run one = scratch.run({"strip.off", "one.obj", "--json", "--max-area-spread=inf", "--max-angle-distortion=inf",
@@ -2520,7 +2520,7 @@ BOOST_AUTO_TEST_CASE(charts_within_bounds)
   BOOST_TEST(j.get<std::size_t>("chart_count") == 1u);
   BOOST_TEST(j.get<std::string>("bounds.max_area_spread") == "null");
   const boost::property_tree::ptree& chart = j.get_child("charts").begin()->second;
-  BOOST_TEST((chart.get<double>("area_spread") > 0.2 || chart.get<double>("angle_distortion") > 0.05),
+  BOOST_TEST((chart.get<double>("area_spread") > 0.2 || chart.get<double>("angle_distortion") > 0.2),
              "the one chart is within the default bounds: area spread " << chart.get<double>("area_spread")
                                                                          << ", angle distortion "
                                                                          << chart.get<double>("angle_distortion"));

@@ -50,11 +50,13 @@ struct Atlas_options
   /// The bound on a chart's area spread (`Atlas_chart_report::area_spread`, default 0.2):
   /// a chart whose one-to-one map exceeds it, or misses `max_angle_distortion` or
   /// `min_compactness`, is split in two (`split`), recursively, until each part meets the
-  /// bounds (a single triangle always does). Infinity keeps one chart per connected component wherever a one-to-one map exists.
+  /// bounds (a single triangle always does). Infinity (with `max_angle_distortion` infinite and
+  /// `min_compactness` 0) keeps one chart per connected component wherever a one-to-one map
+  /// exists.
   double max_area_spread = 0.2;
   /// The bound on a chart's angle distortion (the paper's, `Atlas_chart_report::angle_distortion`,
-  /// default 0.05).
-  double max_angle_distortion = 0.05;
+  /// default 0.2).
+  double max_angle_distortion = 0.2;
   /// The bound on a chart's compactness (`Atlas_chart_report::compactness`, default 0.125):
   /// a long strip or a sparse ring sets the scale of the whole atlas and fills the square
   /// badly, so it is split too, unless it is short: its longer side at most half the side of
