@@ -17,11 +17,6 @@
 #include <CGAL/Surface_mesh_parameterization/internal/borders/border_reports.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/border_search.h>
 
-#include <Eigen/Core>
-
-#include <chrono>
-#include <vector>
-
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
@@ -66,16 +61,10 @@ public:
   template <class Step>
   Error_code build(Step& step) const
   {
-    const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-    std::vector<Eigen::Vector2d> polygon;
-    std::vector<double> closed;
-    const Error_code status = step.members.add_conformal(step.disk, polygon, closed);
-    if(status == OK)
-      internal::report_conformal(step.members.conformal(), closed, step.members.own_blend(CONFORMAL),
-                                 step.disk.length_unit(), step.report);
-    step.report.conformal_border_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return status;
+    return internal::build_conformal_member(
+      step, CONFORMAL,
+      [&step](auto& disk, auto& polygon, auto& closed) { return step.members.add_conformal(disk, polygon, closed); },
+      step.report.conformal_border_seconds);
   }
   /// \endcond
 };

@@ -18,11 +18,6 @@
 #include <CGAL/Surface_mesh_parameterization/internal/borders/border_reports.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/border_search.h>
 
-#include <Eigen/Core>
-
-#include <chrono>
-#include <vector>
-
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 
@@ -65,19 +60,15 @@ public:
   Error_code build(Step& step) const
   {
     Error_code status = step.members.has(CONFORMAL) ? OK : Conformal_border().build(step);
-    const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
-    std::vector<Eigen::Vector2d> polygon;
-    std::vector<double> closed;
     if(status == OK)
-      status = step.members.add_conformal_lengths(step.disk, polygon, closed);
+      status = internal::build_conformal_member(
+        step, CONFORMAL_LENGTHS,
+        [&step](auto& disk, auto& polygon, auto& closed) {
+          return step.members.add_conformal_lengths(disk, polygon, closed);
+        },
+        step.report.conformal_length_seconds);
     if(status == OK)
-    {
-      internal::report_conformal(step.members.conformal(), closed, step.members.own_blend(CONFORMAL_LENGTHS),
-                                 step.disk.length_unit(), step.report);
       step.report.scale_factors = step.members.scale_factors();
-    }
-    step.report.conformal_length_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return status;
   }
   /// \endcond

@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <chrono>
 #include <cstddef>
 #include <vector>
 
@@ -44,6 +45,23 @@ inline void report_conformal(const Conformal_border_data& data, const std::vecto
   report.corrections = data.correction;
   report.turning_angles = data.turning;
   report.conformal_blend = blend;
+}
+
+// A conformal member built by `add` (a call of Border_members::add_conformal or
+// add_conformal_lengths with the disk, the polygon and the closed lengths), reported with the
+// member's own blend; `seconds` gets the time it took.
+template <class Step, class Add>
+Error_code build_conformal_member(Step& step, Border_family member, Add add, double& seconds)
+{
+  const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  std::vector<Eigen::Vector2d> polygon;
+  std::vector<double> closed;
+  const Error_code status = add(step.disk, polygon, closed);
+  if(status == OK)
+    report_conformal(step.members.conformal(), closed, step.members.own_blend(member), step.disk.length_unit(),
+                     step.report);
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return status;
 }
 
 // The center (by its position in vertices(mesh)), the distances and the polar map.
