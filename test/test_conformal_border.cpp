@@ -279,15 +279,23 @@ std::vector<double> dense_turning_angles(const Mesh& m, halfedge_descriptor bhd)
   return turning;
 }
 
-// The conformal-length member's data on `disk` built on `m`'s longest border: the conformal
+// The conformal-length member's data on a disk mesh, built on its longest border: the conformal
 // border's data and the scale factors u_B.
-void length_member(Mesh& m, Disk& disk, Conformal_data& data, std::vector<double>& scale)
+struct Length_member
 {
-  BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
-  BOOST_REQUIRE_EQUAL(SMP::internal::conformal_border_data(disk, data), SMP::OK);
-  BOOST_REQUIRE_EQUAL(SMP::internal::conformal_length_data(disk, data, scale), SMP::OK);
-  BOOST_REQUIRE_EQUAL(scale.size(), disk.border().size());
-}
+  Mesh m;
+  Disk disk;
+  Conformal_data data;
+  std::vector<double> scale;
+
+  explicit Length_member(const mbp_test::Soup& soup) : m(mbp_test::make_mesh<Mesh>(soup))
+  {
+    BOOST_REQUIRE_EQUAL(disk.build_disk(m, mbp_test::longest_border(m), get(CGAL::vertex_point, m)), SMP::OK);
+    BOOST_REQUIRE_EQUAL(SMP::internal::conformal_border_data(disk, data), SMP::OK);
+    BOOST_REQUIRE_EQUAL(SMP::internal::conformal_length_data(disk, data, scale), SMP::OK);
+    BOOST_REQUIRE_EQUAL(scale.size(), disk.border().size());
+  }
+};
 
 double largest_distance(const std::vector<Eigen::Vector2d>& a, const std::vector<Eigen::Vector2d>& b)
 {
@@ -742,11 +750,8 @@ BOOST_AUTO_TEST_CASE(conformal_length_scale_factors_against_a_dense_solve)
 {
   // L u = [Omega_I ; k_B - c] solved here densely, pinned at the center (the package pins its
   // first border vertex), the mean removed
-  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk(5, 16));
-  Disk disk;
-  Conformal_data data;
-  std::vector<double> scale;
-  length_member(m, disk, data, scale);
+  Length_member member(mbp_test::bumpy_disk(5, 16));
+  auto& [m, disk, data, scale] = member;
   Eigen::MatrixXd L;
   std::vector<double> sums;
   dense_laplacian(m, L, sums);
@@ -788,11 +793,8 @@ BOOST_AUTO_TEST_CASE(conformal_length_member_at_blend_zero_is_the_conformal_bord
   {
     BOOST_TEST_CONTEXT(named.first)
     {
-      Mesh m = mbp_test::make_mesh<Mesh>(named.second);
-      Disk disk;
-      Conformal_data data;
-      std::vector<double> scale;
-      length_member(m, disk, data, scale);
+      Length_member member(named.second);
+      auto& [m, disk, data, scale] = member;
       std::vector<Eigen::Vector2d> ours, conformal, half, kept;
       BOOST_REQUIRE(SMP::internal::conformal_length_polygon(data, scale, 0., ours) == SMP::OK);
       BOOST_REQUIRE(SMP::internal::polygon_from_turning_angles(data.turning, data.lengths, conformal) == SMP::OK);
@@ -853,11 +855,8 @@ BOOST_AUTO_TEST_CASE(conformal_length_member_starts_at_its_smallest_simple_blend
 
 BOOST_AUTO_TEST_CASE(conformal_length_member_at_blend_one_turns_as_the_circle_and_is_near_conformal)
 {
-  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk(8, 24));
-  Disk disk;
-  Conformal_data data;
-  std::vector<double> scale;
-  length_member(m, disk, data, scale);
+  Length_member member(mbp_test::bumpy_disk(8, 24));
+  auto& [m, disk, data, scale] = member;
   std::vector<Eigen::Vector2d> ours, kept, opposite;
   BOOST_REQUIRE(SMP::internal::conformal_length_polygon(data, scale, 1., ours) == SMP::OK);
   // the turning angles of the polygon (clockwise) are the circle's
@@ -894,11 +893,8 @@ BOOST_AUTO_TEST_CASE(conformal_length_scale_factors_vanish_on_a_planar_regular_d
 {
   // a planar disk whose border is a regular polygon: Omega = 0 inside and k = c on the border,
   // so u = 0 (the member is the conformal border, i.e. the disk itself, at every blend)
-  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::polar_disk(6, 20));
-  Disk disk;
-  Conformal_data data;
-  std::vector<double> scale;
-  length_member(m, disk, data, scale);
+  Length_member member(mbp_test::polar_disk(6, 20));
+  auto& [m, disk, data, scale] = member;
   double largest = 0.;
   for(double x : scale)
     largest = (std::max)(largest, std::abs(x));
