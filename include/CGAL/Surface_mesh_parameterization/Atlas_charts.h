@@ -192,29 +192,38 @@ inline bool within_bounds(const Atlas_chart& chart, const Chart_bounds& bounds)
 }
 
 // The charts of a face subset: each connected part one chart when its map is one-to-one and
-// within the bounds, otherwise split in two (split_for_bound()), recursively; a single
-// triangle always unfolds, undistorted. `splits` counts the splits.
+// within the bounds, otherwise split in two (split_for_bound()), and so on (a stack of face
+// sets, not a recursion: a split may peel off little, and the depth is not bounded by a
+// logarithm); a single triangle always unfolds, undistorted. `splits` counts the splits.
 inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::size_t>& faces, const Chart_bounds& bounds,
                              std::vector<Atlas_chart>& charts, std::size_t& splits)
 {
-  for(const std::vector<std::size_t>& part : edge_components(t, faces))
+  std::vector<std::vector<std::size_t> > pending(1, faces);
+  while(!pending.empty())
   {
-    Atlas_chart chart;
-    const bool one_to_one = flatten_subset(t, part, chart) || part.size() == 1;
-    if(one_to_one)
+    const std::vector<std::size_t> set = std::move(pending.back());
+    pending.pop_back();
+    for(const std::vector<std::size_t>& part : edge_components(t, set))
     {
-      chart_area_figures(t, chart);
-      chart_angle_distortion(t, chart);
-      chart_compactness(chart);
-      if(part.size() == 1 || within_bounds(chart, bounds))
+      Atlas_chart chart;
+      const bool one_to_one = flatten_subset(t, part, chart) || part.size() == 1;
+      if(one_to_one)
       {
-        charts.push_back(std::move(chart));
-        continue;
+        chart_area_figures(t, chart);
+        chart_angle_distortion(t, chart);
+        chart_compactness(chart);
+        if(part.size() == 1 || within_bounds(chart, bounds))
+        {
+          charts.push_back(std::move(chart));
+          continue;
+        }
       }
+      ++splits;
+      std::array<std::vector<std::size_t>, 2> halves =
+        split_for_bound(t, part, bounds.options.split, one_to_one ? &chart : nullptr);
+      pending.push_back(std::move(halves[1]));
+      pending.push_back(std::move(halves[0]));
     }
-    ++splits;
-    for(const std::vector<std::size_t>& half : split_for_bound(t, part, bounds.options.split, one_to_one ? &chart : nullptr))
-      flatten_face_set(t, half, bounds, charts, splits);
   }
 }
 
