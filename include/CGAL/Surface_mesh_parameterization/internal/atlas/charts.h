@@ -25,6 +25,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
@@ -259,6 +260,38 @@ inline void unfold_across(const Atlas_triangles& t, const std::vector<std::size_
   chart.corners[g][std::size_t(kg)] = place_third_corner(pg, kg, ub, ua);
 }
 
+// Corners of one vertex whose UVs differ by rounding only (a vertex reached along two paths
+// of the spanning tree) are given one UV, the first: two faces that share an edge in 3D and
+// in UV then share it exactly, instead of overlapping by a sliver one rounding wide.
+inline void weld_rounded_corners(const Atlas_triangles& t, Atlas_chart& chart)
+{
+  Eigen::AlignedBox2d box;
+  std::vector<std::pair<int, std::size_t> > corners;  // (vertex, 3 face + k)
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      box.extend(chart.corners[i][k]);
+      corners.emplace_back(t.faces[chart.faces[i]][k], 3 * i + k);
+    }
+  const double tolerance = 1e-9 * box.diagonal().norm();
+  std::sort(corners.begin(), corners.end());
+  auto uv = [&chart](std::size_t c) -> Eigen::Vector2d& { return chart.corners[c / 3][c % 3]; };
+  for(std::size_t first = 0; first < corners.size();)
+  {
+    std::size_t end = first;
+    while(end < corners.size() && corners[end].first == corners[first].first)
+      ++end;
+    for(std::size_t a = first; a < end; ++a)
+      for(std::size_t b = first; b < a; ++b)
+        if((uv(corners[a].second) - uv(corners[b].second)).norm() <= tolerance)
+        {
+          uv(corners[a].second) = uv(corners[b].second);
+          break;
+        }
+    first = end;
+  }
+}
+
 // The isometric unfolding of a face subset along a breadth-first spanning tree of its faces:
 // each face is laid out across the edge it shares with its parent. Consistent (every vertex
 // placed once per face) and exact in angles and lengths; it may overlap itself, which the
@@ -294,6 +327,7 @@ inline Atlas_chart unfold_isometrically(const Atlas_triangles& t, const std::vec
         queue.push_back(std::size_t(g));
       }
   }
+  weld_rounded_corners(t, chart);
   return chart;
 }
 
