@@ -261,9 +261,11 @@ inline void unfold_across(const Atlas_triangles& t, const std::vector<std::size_
 }
 
 // Corners of one vertex whose UVs differ by rounding only (a vertex reached along two paths
-// of the spanning tree) are given one UV, the first: two faces that share an edge in 3D and
-// in UV then share it exactly, instead of overlapping by a sliver one rounding wide.
-inline void weld_rounded_corners(const Atlas_triangles& t, Atlas_chart& chart)
+// of an unfolding's spanning tree, a vertex pinched in the chart whose two copies the map puts
+// at one place) are given one UV, the first: two faces that meet there in 3D then meet exactly
+// in UV, instead of overlapping by a sliver one rounding wide once the packing has moved them.
+// Returns whether a UV moved.
+inline bool weld_rounded_corners(const Atlas_triangles& t, Atlas_chart& chart)
 {
   Eigen::AlignedBox2d box;
   std::vector<std::pair<int, std::size_t> > corners;  // (vertex, 3 face + k)
@@ -276,6 +278,7 @@ inline void weld_rounded_corners(const Atlas_triangles& t, Atlas_chart& chart)
   const double tolerance = 1e-9 * box.diagonal().norm();
   std::sort(corners.begin(), corners.end());
   auto uv = [&chart](std::size_t c) -> Eigen::Vector2d& { return chart.corners[c / 3][c % 3]; };
+  bool moved = false;
   for(std::size_t first = 0; first < corners.size();)
   {
     std::size_t end = first;
@@ -285,11 +288,13 @@ inline void weld_rounded_corners(const Atlas_triangles& t, Atlas_chart& chart)
       for(std::size_t b = first; b < a; ++b)
         if((uv(corners[a].second) - uv(corners[b].second)).norm() <= tolerance)
         {
+          moved = moved || uv(corners[a].second) != uv(corners[b].second);
           uv(corners[a].second) = uv(corners[b].second);
           break;
         }
     first = end;
   }
+  return moved;
 }
 
 // The isometric unfolding of a face subset along a breadth-first spanning tree of its faces:
