@@ -511,6 +511,27 @@ BOOST_AUTO_TEST_CASE(bounds_are_kept)
   BOOST_CHECK_EQUAL(SMP::compute_atlas_of_polygon_soup(s.points, s.faces, uvs, charts, bad), SMP::ERROR_WRONG_PARAMETER);
 }
 
+// Corners of one vertex a rounding apart get one UV; copies of a vertex far apart (the two
+// sides of a seam) keep theirs.
+BOOST_AUTO_TEST_CASE(corners_a_rounding_apart_are_welded)
+{
+  SMP::internal::Atlas_triangles t;
+  t.points = {Eigen::Vector3d(0., 0., 0.), Eigen::Vector3d(1., 0., 0.), Eigen::Vector3d(1., 1., 0.),
+              Eigen::Vector3d(0., 1., 0.)};
+  t.faces = {{{0, 1, 2}}, {{0, 2, 3}}};
+  SMP::internal::Atlas_chart chart;
+  chart.faces = {0, 1};
+  const Eigen::Vector2d a(0., 0.), b(1., 0.), c(1., 1.), d(0., 1.);
+  chart.corners = {{{a, b, c}}, {{a, Eigen::Vector2d(std::nextafter(1., 2.), 1.), d}}};
+  BOOST_CHECK(SMP::internal::weld_rounded_corners(t, chart));
+  BOOST_CHECK(chart.corners[1][1] == c);
+  BOOST_CHECK(SMP::internal::is_one_to_one_chart(t, chart));
+  BOOST_CHECK(!SMP::internal::weld_rounded_corners(t, chart));  // nothing left to weld
+  chart.corners[1] = {{Eigen::Vector2d(0., 3.), Eigen::Vector2d(1., 3.), Eigen::Vector2d(0., 4.)}};  // a seam's other side
+  BOOST_CHECK(!SMP::internal::weld_rounded_corners(t, chart));
+  BOOST_CHECK(chart.corners[1][0] == Eigen::Vector2d(0., 3.));
+}
+
 // ----------------------------------------------------------- core tier: CGAL's data meshes
 
 namespace {
