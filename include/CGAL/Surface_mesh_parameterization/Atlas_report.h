@@ -114,8 +114,9 @@ struct Atlas_report
   Soup_repair_report repair;
   /// the charts, by chart id (the ids written to the face or polygon chart map)
   std::vector<Atlas_chart_report> charts;
-  /// the bounds the charts were made for (`Atlas_options`)
-  double max_area_spread = 0., max_angle_distortion = 0., min_compactness = 0.;
+  double max_area_spread = 0.;       ///< the charts' bound on area spread (`Atlas_options`)
+  double max_angle_distortion = 0.;  ///< the charts' bound on angle distortion (`Atlas_options`)
+  double min_compactness = 0.;       ///< the charts' bound on compactness (`Atlas_options`)
   /// charts split in two because they missed a bound (each split adds at least one chart)
   std::size_t splits = 0;
   /// the area of all charts in the atlas over the area of the unit square
