@@ -729,6 +729,79 @@ BOOST_AUTO_TEST_CASE(automatic_border_keeps_the_best_valid_candidate)
   BOOST_TEST(r.kept_border == SMP::CONFORMAL);
 }
 
+BOOST_AUTO_TEST_CASE(distortion_bound_ranks_within_first_then_angle_and_area_together)
+{
+  const SMP::Distortion_bound bound;  // 0.2 and 0.2
+  const double inf = std::numeric_limits<double>::infinity();
+  BOOST_TEST(bound.met_by(0.2, 0.2));
+  BOOST_TEST(!bound.met_by(0.2, 0.21));
+  // within the bound: by angle alone, before every layout outside it
+  BOOST_TEST(bound.rank(0.01, 0.19) < bound.rank(0.02, 0.01));
+  BOOST_TEST(bound.rank(0.2, 0.2) < bound.rank(1e-9, 0.21));
+  // outside: a relative trade, (a / 0.2) (s / 0.2)
+  BOOST_TEST(std::abs(bound.rank(0.4, 0.8) - (1. + 2. * 4.)) <= 1e-12);
+  BOOST_TEST(bound.rank(0.0095, 3.313) < bound.rank(0.0428, 3.294));  // a little area for much angle loses
+  BOOST_TEST(bound.rank(0.0104, 0.636) < bound.rank(0.262, 0.417));   // much angle for a little area wins
+  // an infinite bound does not count: by angle alone, or by area alone outside the other bound
+  const SMP::Distortion_bound no_bound{inf, inf}, area_only{inf, 0.2};
+  BOOST_TEST(no_bound.rank(0.01, 50.) < no_bound.rank(0.02, 0.));
+  BOOST_TEST(area_only.rank(9., 0.3) < area_only.rank(0.01, 0.4));
+  BOOST_TEST(std::isinf(SMP::Distortion_bound{0., 0.2}.rank(0.1, 0.)));  // 0 times infinity is not NaN
+}
+
+namespace {
+
+// The rank of a reported candidate by `bound` (+infinity when it is not valid).
+double candidate_rank(const SMP::Distortion_bound& bound, const SMP::Border_candidate& c)
+{
+  return c.valid ? bound.rank(c.objective, c.area_spread) : std::numeric_limits<double>::infinity();
+}
+
+} // namespace
+
+BOOST_AUTO_TEST_CASE(automatic_border_tries_the_conformal_length_member_and_ranks_by_its_bound)
+{
+  // the spiral ramp's conformal border overlaps itself: the conformal-length member is tried
+  Mesh m = mbp_test::make_mesh<Mesh>(spiral_ramp());
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<SMP::Border_family> kept_members;
+  for(const SMP::Distortion_bound& bound :
+      {SMP::Distortion_bound(), SMP::Distortion_bound{inf, inf}, SMP::Distortion_bound{inf, 0.01},
+       SMP::Distortion_bound{1e-6, 1e-6}})
+    BOOST_TEST_CONTEXT("bound " << bound.max_angle_distortion << ", " << bound.max_area_spread)
+    {
+      UV_map uv = mbp_test::new_uv_map(m, "v:uv");
+      Report r;
+      const SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<> > p{SMP::Automatic_border<>(bound)};
+      BOOST_REQUIRE_EQUAL(SMP::parameterize(m, p, mbp_test::longest_border(m), uv, &r), SMP::OK);
+      BOOST_REQUIRE(r.chosen_candidate >= 0);
+      BOOST_TEST(r.conformal_blend > 0.);  // the conformal border's own blend, kept in the report
+      bool lengths = false;
+      const SMP::Border_candidate& kept = r.border_candidates[std::size_t(r.chosen_candidate)];
+      for(const SMP::Border_candidate& c : r.border_candidates)
+      {
+        lengths = lengths || c.family == SMP::CONFORMAL_LENGTHS;
+        BOOST_TEST((c.valid == std::isfinite(c.area_spread)));
+        BOOST_TEST(candidate_rank(bound, kept) <= candidate_rank(bound, c));
+      }
+      BOOST_TEST(lengths);
+      // the kept figures are those of the written map, computed independently
+      const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
+      BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+      BOOST_TEST(std::abs(q.angle_distortion - kept.objective) <= 1e-9 * q.angle_distortion);
+      BOOST_TEST(std::abs(q.area_distortion_mean - kept.area_spread) <= 1e-9 * q.area_distortion_mean);
+      BOOST_TEST_MESSAGE("kept " << int(kept.family) << " at " << kept.blend << ": angle " << kept.objective
+                                 << ", area spread " << kept.area_spread << ", " << r.border_candidates.size()
+                                 << " candidates");
+      kept_members.push_back(kept.family);
+    }
+  // the bound decides: by angle alone the conformal-length member (a thousand times less angle
+  // distortion here); by area alone another member (the conformal lengths crush the ramp)
+  BOOST_REQUIRE_EQUAL(kept_members.size(), 4u);
+  BOOST_TEST(kept_members[1] == SMP::CONFORMAL_LENGTHS);
+  BOOST_TEST(kept_members[2] != SMP::CONFORMAL_LENGTHS);
+}
+
 // ------------------------------------------------------------------ real disks (extended tier)
 
 namespace {

@@ -103,12 +103,20 @@ void corners_from_uv(const Graph& graph, const Subset_surface& s, UVmap uvmap, F
     }
 }
 
+// The complete parameterizer whose automatic border ranks its layouts by the charts' bound.
+template <class Graph>
+Conformal_parameterizer_3<Graph> chart_parameterizer(const Atlas_options& options)
+{
+  return Conformal_parameterizer_3<Graph>(
+    Automatic_border<>(Distortion_bound{options.max_angle_distortion, options.max_area_spread}));
+}
+
 // The disk flattened by the complete parameterizer (automatic border).
-inline bool flatten_disk(Subset_surface& s, Atlas_chart& chart)
+inline bool flatten_disk(Subset_surface& s, const Atlas_options& options, Atlas_chart& chart)
 {
   auto uv = s.mesh.add_property_map<Atlas_vertex, Atlas_kernel::Point_2>("v:atlas_uv").first;
   const auto bhd = main_border(s.mesh).first;
-  if(parameterize(s.mesh, Conformal_parameterizer_3<Atlas_surface>(), bhd, uv) != OK)
+  if(parameterize(s.mesh, chart_parameterizer<Atlas_surface>(options), bhd, uv) != OK)
     return false;
   chart.flattening = DISK_CHART;
   corners_from_uv(s.mesh, s, uv, [](std::size_t i) { return Atlas_face(Atlas_surface::size_type(i)); },
@@ -136,7 +144,7 @@ polygon_diagonals(Subset_surface& s, const Atlas_triangles& t, const std::vector
 // Any other surface (the subset `faces` of `t`) cut open along automatic seams (around the
 // input polygons) into a disk, then flattened.
 inline bool flatten_with_seams(Subset_surface& s, const Atlas_triangles& t, const std::vector<std::size_t>& faces,
-                               Atlas_chart& chart)
+                               const Atlas_options& options, Atlas_chart& chart)
 {
   typedef Atlas_surface::Property_map<Atlas_surface::Edge_index, bool>  Seam_edges;
   typedef Atlas_surface::Property_map<Atlas_vertex, bool>               Seam_vertices;
@@ -151,7 +159,7 @@ inline bool flatten_with_seams(Subset_surface& s, const Atlas_triangles& t, cons
   seam_mesh.set_seam_edges_number(seams.number_of_seam_edges);
   auto uv = get(CGAL::dynamic_vertex_property_t<Atlas_kernel::Point_2>(), seam_mesh);
   const auto bhd = main_border(seam_mesh).first;
-  if(parameterize(seam_mesh, Conformal_parameterizer_3<Seam_mesh>(), bhd, uv) != OK)
+  if(parameterize(seam_mesh, chart_parameterizer<Seam_mesh>(options), bhd, uv) != OK)
     return false;
   chart.flattening = SEAMED_CHART;
   typedef typename boost::graph_traits<Seam_mesh>::halfedge_descriptor Seam_halfedge;
@@ -164,11 +172,12 @@ inline bool flatten_with_seams(Subset_surface& s, const Atlas_triangles& t, cons
 // isometric unfolding) give a one-to-one map; false when the subset must be split. The
 // parameterizer's own check (no flipped face, a simple border: a one-to-one map) needs no
 // second one here, unless corners were welded (weld_rounded_corners()).
-inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size_t>& faces, Atlas_chart& chart)
+inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size_t>& faces, const Atlas_options& options,
+                           Atlas_chart& chart)
 {
   Subset_surface s = make_subset_surface(t, faces);
   chart.faces = faces;
-  if(s.built && (is_topological_disk(s.mesh) ? flatten_disk(s, chart) : flatten_with_seams(s, t, faces, chart)))
+  if(s.built && (is_topological_disk(s.mesh) ? flatten_disk(s, options, chart) : flatten_with_seams(s, t, faces, options, chart)))
     return !weld_rounded_corners(t, chart) || is_one_to_one_chart(t, chart);
   chart = unfold_isometrically(t, faces);
   return is_one_to_one_chart(t, chart);
@@ -206,7 +215,7 @@ inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::si
     for(const std::vector<std::size_t>& part : edge_components(t, set))
     {
       Atlas_chart chart;
-      const bool one_to_one = flatten_subset(t, part, chart) || part.size() == 1;
+      const bool one_to_one = flatten_subset(t, part, bounds.options, chart) || part.size() == 1;
       if(one_to_one)
       {
         chart_area_figures(t, chart);

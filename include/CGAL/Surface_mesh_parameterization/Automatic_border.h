@@ -13,9 +13,11 @@
 /// \file Automatic_border.h
 
 #include <CGAL/Surface_mesh_parameterization/Conformal_border.h>
+#include <CGAL/Surface_mesh_parameterization/Distortion_bound.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_border.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/borders/border_reports.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/border_search.h>
 
 namespace CGAL {
@@ -23,31 +25,39 @@ namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
 ///
-/// The border policy that picks the best border of a family by the angle distortion of the
-/// discrete conformal map it gives. The members of the family (`Border_family`) are the
-/// circle (`Circular_border`), the measured border (`Measured_border` with the given policies)
-/// and the conformal border (`Conformal_border`); each member is a path of borders from the
-/// member itself to a convex border (its *blends*). Every candidate costs two
+/// The border policy that picks the best border of a family by the distortion of the discrete
+/// conformal map it gives, angle and area together (`Distortion_bound`). The members of the
+/// family (`Border_family`) are the circle (`Circular_border`), the measured border
+/// (`Measured_border` with the given policies), the conformal border (`Conformal_border`)
+/// and the conformal-length border (`Conformal_length_border`); each member is a path of
+/// borders from the member itself to a convex border (its *blends*). Every candidate costs two
 /// back-substitutions with the one factorization of \f$ L_{II} \f$, a validity check and an
-/// evaluation of the angle distortion. The search, deterministic:
+/// evaluation of the angle distortion and the area spread. The search, deterministic:
 /// 1. the circle and the conformal border (at its smallest simple blend toward the circle:
 ///    0 unless the conformal polygon self-intersects), in one batch;
-/// 2. only when the conformal layout is not one-to-one: the measured member (the policies'
+/// 2. when the conformal polygon self-intersects or its layout is not one-to-one: the
+///    conformal-length member at its own smallest simple blend (one more factorization, of
+///    the whole cotangent Laplacian). Its angle distortion is much lower than the conformal
+///    blend's, its area spread can be much higher (limbs crushed): the rank decides;
+/// 3. only when the conformal layout is not one-to-one: the measured member (the policies'
 ///    center and distances; the spring Laplacian of the Poisson distance map is factorized
 ///    only when the `BorderDistance` policy asks for it). On the 23 real disks of the
 ///    benchmark (`benchmark/README.md`) the measured member never had less angle distortion
 ///    than a valid conformal layout, and building it costs a center search and a distance
 ///    map;
-/// 3. for each member whose own layout is not one-to-one but whose angle distortion (of the
-///    invalid layout) is lower than the best valid one so far, the smallest valid blend
-///    toward its convex border, by five bisection steps (all such members in one batch per
-///    step); along a member the distortion grows as the border moves toward the convex one,
-///    so the smallest valid blend is the member's best.
+/// 4. for each member whose own layout is not one-to-one but ranks (as if it were valid)
+///    before the best valid one so far, the smallest valid blend toward its convex border, by
+///    five bisection steps (all such members in one batch per step); along a member the
+///    distortion grows as the border moves toward the convex one, so the smallest valid
+///    blend is the member's best.
 ///
-/// The valid layout of lowest angle distortion is kept; when none is valid,
+/// The valid layout of lowest rank (`Distortion_bound::rank()`) is kept: among the layouts
+/// within the bound, the one of lowest angle distortion; when none is within, the one of lowest
+/// sum of the angle distortion and the area spread, each over its bound. When none is valid,
 /// `Conformal_parameterizer_3` repairs (`BLEND_TOWARD_CIRCLE`). The circle is convex and the
 /// conformal border at blend 1 is convex, so the search always has a simple, convex end
-/// point. The report lists every layout tried (`Parameterization_report::border_candidates`).
+/// point. The report lists every layout tried (`Parameterization_report::border_candidates`,
+/// with each one's angle distortion and area spread).
 ///
 /// \cgalModels `BorderPolicy`
 ///
@@ -62,11 +72,19 @@ public:
   /// The policy of the measured member
   typedef Measured_border<CenterLocator, BorderDistance> Measured_member;
 
-  /// creates the policy with the given measured member.
-  explicit Automatic_border(Measured_member measured = Measured_member()) : m_measured(measured) { }
+  /// creates the policy with the given measured member and bound (by default 0.2 on the angle
+  /// distortion and 0.2 on the area spread, the atlas's defaults).
+  explicit Automatic_border(Measured_member measured = Measured_member(), Distortion_bound bound = Distortion_bound())
+    : m_measured(measured), m_bound(bound)
+  { }
+
+  /// creates the policy with the default measured member and the given bound.
+  explicit Automatic_border(Distortion_bound bound) : Automatic_border(Measured_member(), bound) { }
 
   /// the policy of the measured member.
   const Measured_member& measured_border() const { return m_measured; }
+  /// the bound that ranks the layouts.
+  const Distortion_bound& bound() const { return m_bound; }
 
   /// \cond SKIP_IN_MANUAL
   static constexpr bool searches = true;
@@ -82,13 +100,16 @@ public:
   template <class Step, class Evaluator>
   Error_code choose(Step& step, Evaluator& evaluator) const
   {
-    return internal::automatic_search(evaluator, [&] { return m_measured.build(step); }, step.report,
-                                      step.repairable);
+    evaluator.rank_by(m_bound);
+    return internal::automatic_search(
+      evaluator, [&] { return m_measured.build(step); },
+      [&] { return internal::build_conformal_length_member(step, false); }, step.report, step.repairable);
   }
   /// \endcond
 
 private:
   Measured_member m_measured;
+  Distortion_bound m_bound;
 };
 
 } // namespace Surface_mesh_parameterization

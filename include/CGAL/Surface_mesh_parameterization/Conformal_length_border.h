@@ -43,7 +43,8 @@ namespace Surface_mesh_parameterization {
 /// costs one more sparse factorization than `Conformal_border`, that of \f$ L \f$ with one
 /// vertex pinned, of about the cost of \f$ L_{II} \f$'s. The lengths can crush limbs (much
 /// area distortion where the conformal factors span many units): the angle distortion alone
-/// does not tell whether it is the better border, and `Automatic_border` does not try it.
+/// does not tell whether it is the better border: `Automatic_border` tries it and ranks it by
+/// angle and area together (`Distortion_bound`).
 /// The report gives the conformal border's quantities, the blend
 /// (`Parameterization_report::conformal_blend`) and the scale factors
 /// (`Parameterization_report::scale_factors`).
@@ -59,17 +60,8 @@ public:
   template <class Step>
   Error_code build(Step& step) const
   {
-    Error_code status = step.members.has(CONFORMAL) ? OK : Conformal_border().build(step);
-    if(status == OK)
-      status = internal::build_conformal_member(
-        step, CONFORMAL_LENGTHS,
-        [&step](auto& disk, auto& polygon, auto& closed) {
-          return step.members.add_conformal_lengths(disk, polygon, closed);
-        },
-        step.report.conformal_length_seconds);
-    if(status == OK)
-      step.report.scale_factors = step.members.scale_factors();
-    return status;
+    const Error_code status = step.members.has(CONFORMAL) ? OK : Conformal_border().build(step);
+    return status == OK ? internal::build_conformal_length_member(step, true) : status;
   }
   /// \endcond
 };

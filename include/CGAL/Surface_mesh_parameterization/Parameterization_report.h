@@ -78,6 +78,8 @@ struct Border_candidate
   bool valid = false;
   /// its angle distortion (`+infinity` when not valid)
   double objective = std::numeric_limits<double>::infinity();
+  /// its area spread (`Distortion_bound`; `+infinity` when not valid)
+  double area_spread = std::numeric_limits<double>::infinity();
 };
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured

@@ -20,6 +20,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/min_area_rectangle.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/angle_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/area_spread.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/triangle_adjacency.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
@@ -358,8 +359,7 @@ inline bool is_one_to_one_chart(const Atlas_triangles& t, const Atlas_chart& cha
   return !any_uv_triangles_overlap(vertices, corners);
 }
 
-// The area spread (area-weighted mean |log(UV area / 3D area)| after the UV areas are scaled
-// to the 3D total) and the areas of a chart.
+// The area spread (area_spread.h) and the areas of a chart.
 inline void chart_area_figures(const Atlas_triangles& t, Atlas_chart& chart)
 {
   std::vector<double> area3(chart.faces.size()), area2(chart.faces.size());
@@ -369,20 +369,11 @@ inline void chart_area_figures(const Atlas_triangles& t, Atlas_chart& chart)
     const Face_indices& v = t.faces[chart.faces[i]];
     area3[i] = 0.5 * (t.points[std::size_t(v[1])] - t.points[std::size_t(v[0])])
                        .cross(t.points[std::size_t(v[2])] - t.points[std::size_t(v[0])]).norm();
-    const Eigen::Vector2d e = chart.corners[i][1] - chart.corners[i][0], g = chart.corners[i][2] - chart.corners[i][0];
-    area2[i] = 0.5 * std::abs(e.x() * g.y() - e.y() * g.x());
+    area2[i] = uv_triangle_area(chart.corners[i][0], chart.corners[i][1], chart.corners[i][2]);
     chart.area_3d += area3[i];
     chart.area_uv += area2[i];
   }
-  chart.area_spread = 0.;
-  if(!(chart.area_3d > 0.) || !(chart.area_uv > 0.))
-    return;
-  const double log_scale = std::log(chart.area_3d / chart.area_uv);
-  double sum = 0.;
-  for(std::size_t i = 0; i < area3.size(); ++i)
-    if(area3[i] > 0. && area2[i] > 0.)
-      sum += area3[i] * std::abs(std::log(area2[i] / area3[i]) + log_scale);
-  chart.area_spread = sum / chart.area_3d;
+  chart.area_spread = area_spread(area3, area2);
 }
 
 // The compactness of a chart: its UV area over the square of the longer side of its smallest

@@ -15,12 +15,15 @@
 // candidates are solved in batches, one multi-column solve per batch) or the mean value map
 // (positive weights: one-to-one for a convex border, by Floater's theorem; the disk's mean
 // value system, factorized on first use). The evaluator records every candidate and keeps the
-// valid one of lowest angle distortion.
+// valid one of lowest rank (Distortion_bound::rank(): by the angle distortion alone unless a
+// policy sets a finite bound, as Automatic_border does).
 
+#include <CGAL/Surface_mesh_parameterization/Distortion_bound.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Parameterization_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/borders/border_members.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/angle_distortion.h>
+#include <CGAL/Surface_mesh_parameterization/internal/core/area_spread.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
 
 #include <Eigen/Core>
@@ -45,6 +48,8 @@ struct Border_trial
   double objective;           // angle distortion; +infinity when not valid
   double estimate;            // angle distortion of the layout even when not valid (+infinity
                               // when there is no layout: the border could not be built or solved)
+  double area_spread;         // area spread of the layout, as `estimate`
+  double rank;                // the bound's rank of (estimate, area_spread), as `estimate`
 };
 
 // A layout: border UVs (disk.border() order) and interior UVs (interior_vertices() order).
@@ -73,8 +78,13 @@ public:
   typedef std::pair<Border_family, double> Request;
 
   Border_evaluator(Disk& disk, const Border_members& members)
-    : m_disk(disk), m_members(members), m_objective(disk_angle_distortion(disk))
+    : m_disk(disk), m_members(members), m_objective(disk_angle_distortion(disk)),
+      m_area(disk.points(), disk_real_faces(disk))
   { }
+
+  // ranks the layouts evaluated from now on by `bound` (by default: infinite, i.e. by the
+  // angle distortion alone)
+  void rank_by(const Distortion_bound& bound) { m_bound = bound; }
 
   // evaluates the requested borders with one interior; returns their trials
   std::vector<Border_trial> evaluate(const std::vector<Request>& batch, bool mean_value)
@@ -90,7 +100,7 @@ public:
       const Border_trial trial = judge(batch[i], mean_value, solved && placed[i], solutions[i]);
       m_trials.push_back(trial);
       result.push_back(trial);
-      if(trial.valid && trial.objective < best_objective())
+      if(trial.valid && trial.rank < best_rank())
       {
         m_best = static_cast<int>(m_trials.size()) - 1;
         m_best_solution = std::move(solutions[i]);
@@ -103,22 +113,25 @@ public:
   const Border_members& members() const { return m_members; }
   // index of the kept trial, -1 when none is valid
   int best() const { return m_best; }
-  double best_objective() const
+  // the rank of the kept trial, +infinity when none is valid
+  double best_rank() const
   {
-    return m_best < 0 ? std::numeric_limits<double>::infinity() : m_trials[static_cast<std::size_t>(m_best)].objective;
+    return m_best < 0 ? std::numeric_limits<double>::infinity() : m_trials[static_cast<std::size_t>(m_best)].rank;
   }
   const Border_solution& best_solution() const { return m_best_solution; }
 
 private:
-  Border_trial judge(const Request& request, bool mean_value, bool laid_out, const Border_solution& solution) const
+  Border_trial judge(const Request& request, bool mean_value, bool laid_out, const Border_solution& solution)
   {
     const double inf = std::numeric_limits<double>::infinity();
-    Border_trial trial{request.first, request.second, mean_value, false, 0, inf, inf};
+    Border_trial trial{request.first, request.second, mean_value, false, 0, inf, inf, inf, inf};
     if(!laid_out)
       return trial;
     std::vector<Eigen::Vector2d> uv;
     assemble_uv(m_disk, solution, uv);
     trial.estimate = m_objective(uv);
+    trial.area_spread = m_area(uv);
+    trial.rank = m_bound.rank(trial.estimate, trial.area_spread);
     trial.flipped_faces = count_flips(m_disk.faces_indices(), m_disk.number_of_real_faces(), uv);
     trial.valid = trial.flipped_faces == 0 && border_curves_are_valid(m_disk, uv);
     if(trial.valid)
@@ -157,6 +170,8 @@ private:
   Disk& m_disk;
   const Border_members& m_members;
   Angle_distortion m_objective;
+  Area_spread m_area;
+  Distortion_bound m_bound{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   std::vector<Border_trial> m_trials;
   int m_best = -1;
   Border_solution m_best_solution;

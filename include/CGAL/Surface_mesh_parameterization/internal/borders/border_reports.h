@@ -49,18 +49,33 @@ inline void report_conformal(const Conformal_border_data& data, const std::vecto
 
 // A conformal member built by `add` (a call of Border_members::add_conformal or
 // add_conformal_lengths with the disk, the polygon and the closed lengths), reported with the
-// member's own blend; `seconds` gets the time it took.
+// member's own blend unless `reported` is false; `seconds` gets the time it took.
 template <class Step, class Add>
-Error_code build_conformal_member(Step& step, Border_family member, Add add, double& seconds)
+Error_code build_conformal_member(Step& step, Border_family member, Add add, double& seconds, bool reported = true)
 {
   const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   std::vector<Eigen::Vector2d> polygon;
   std::vector<double> closed;
   const Error_code status = add(step.disk, polygon, closed);
-  if(status == OK)
+  if(status == OK && reported)
     report_conformal(step.members.conformal(), closed, step.members.own_blend(member), step.disk.length_unit(),
                      step.report);
   seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return status;
+}
+
+// The conformal-length member (the conformal member built first), with its time and scale
+// factors in the report; `reported`: whether the report gives its own blend and closed lengths
+// (the policy's own member) or keeps the conformal border's (a member of the automatic search).
+template <class Step>
+Error_code build_conformal_length_member(Step& step, bool reported)
+{
+  const Error_code status = build_conformal_member(
+    step, CONFORMAL_LENGTHS,
+    [&step](auto& disk, auto& polygon, auto& closed) { return step.members.add_conformal_lengths(disk, polygon, closed); },
+    step.report.conformal_length_seconds, reported);
+  if(status == OK)
+    step.report.scale_factors = step.members.scale_factors();
   return status;
 }
 

@@ -83,30 +83,37 @@ Error_code choose_border(const Policy& policy, Step& step, Evaluator& evaluator)
   }
 }
 
-// The automatic border's search:
+// The automatic border's search, its layouts ranked by the policy's bound (the caller's
+// Evaluator::rank_by()):
 // 1. the circle and the conformal border (at its own blend), in one batch;
-// 2. only when the conformal layout is not one-to-one: the measured member
-//    (`add_measured()`, which returns ERROR_CANNOT_SOLVE_LINEAR_SYSTEM for a fatal failure
-//    and any other failure to leave the member out);
-// 3. for each member whose own layout is not one-to-one but whose angle distortion (of the
-//    invalid layout) is below the best valid one so far, the smallest valid blend.
-// `repairable` gets the members in the order of their own layouts' angle distortion.
-template <class Evaluator, class AddMeasured>
-Error_code automatic_search(Evaluator& evaluator, const AddMeasured& add_measured, Parameterization_report& report,
-                            std::vector<Border_family>& repairable)
+// 2. when the conformal polygon is not simple (own blend > 0) or its layout not one-to-one:
+//    the conformal-length member (`add_lengths()`);
+// 3. only when the conformal layout is not one-to-one: the measured member (`add_measured()`).
+//    Both return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM for a fatal failure and any other failure
+//    to leave the member out;
+// 4. for each member whose own layout is not one-to-one but ranks (as if it were) before the
+//    best valid one so far, the smallest valid blend.
+// `repairable` gets the members in the order of their own layouts' ranks.
+template <class Evaluator, class AddMeasured, class AddLengths>
+Error_code automatic_search(Evaluator& evaluator, const AddMeasured& add_measured, const AddLengths& add_lengths,
+                            Parameterization_report& report, std::vector<Border_family>& repairable)
 {
   std::vector<typename Evaluator::Request> batch(1, {CIRCLE, 1.});
-  if(evaluator.members().has(CONFORMAL))
+  const bool conformal = evaluator.members().has(CONFORMAL);
+  if(conformal)
     batch.emplace_back(CONFORMAL, evaluator.members().own_blend(CONFORMAL));
   std::vector<Border_trial> own = evaluator.evaluate(batch, false);
-  if(!own.back().valid)  // no valid conformal layout: the measured member too
-  {
-    const Error_code status = add_measured();
-    if(status == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM)
-      return status;
+  const auto add = [&](const auto& build, Border_family member) {
+    const Error_code status = build();
     if(status == OK)
-      own.push_back(evaluator.evaluate({{MEASURED, 0.}}, false).front());
-  }
+      own.push_back(evaluator.evaluate({{member, evaluator.members().own_blend(member)}}, false).front());
+    return status == ERROR_CANNOT_SOLVE_LINEAR_SYSTEM ? status : OK;
+  };
+  const bool folds = !own.back().valid;  // no valid conformal layout
+  if(conformal && (folds || evaluator.members().own_blend(CONFORMAL) > 0.) && add(add_lengths, CONFORMAL_LENGTHS) != OK)
+    return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+  if(folds && add(add_measured, MEASURED) != OK)
+    return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
   bool first = true;
   for(const Border_trial& t : own)
     if(std::isfinite(t.estimate))
@@ -117,12 +124,12 @@ Error_code automatic_search(Evaluator& evaluator, const AddMeasured& add_measure
     }
   std::vector<Border_family> search;
   for(const Border_trial& t : own)
-    if(!t.valid && t.member != CIRCLE && t.estimate < evaluator.best_objective())
+    if(!t.valid && t.member != CIRCLE && t.rank < evaluator.best_rank())
       search.push_back(t.member);
   if(!search.empty())
     search_smallest_valid_blend(evaluator, search, false);
   report.valid_before_repair = evaluator.best() >= 0;
-  std::stable_sort(own.begin(), own.end(), [](const Border_trial& a, const Border_trial& b) { return a.estimate < b.estimate; });
+  std::stable_sort(own.begin(), own.end(), [](const Border_trial& a, const Border_trial& b) { return a.rank < b.rank; });
   for(const Border_trial& t : own)
     repairable.push_back(t.member);
   return OK;
@@ -157,7 +164,8 @@ template <class Evaluator>
 Error_code report_choice(const Evaluator& evaluator, bool searched, Parameterization_report& report)
 {
   for(const Border_trial& t : evaluator.trials())
-    report.border_candidates.push_back(Border_candidate{t.member, t.blend, t.mean_value, t.valid, t.objective});
+    report.border_candidates.push_back(Border_candidate{t.member, t.blend, t.mean_value, t.valid, t.objective,
+                                                         t.valid ? t.area_spread : t.objective});
   report.chosen_candidate = evaluator.best();
   if(evaluator.best() < 0)
     return ERROR_NO_1_TO_1_MAPPING;

@@ -101,8 +101,16 @@ private:
   double m_vertices = 0.;
 };
 
-// The angle distortion of the real faces of a disk (hole fillings left out; the vertices of
-// the holes count as border vertices).
+// The real faces of a disk (hole fillings left out).
+template <class Disk>
+std::vector<Face_indices> disk_real_faces(const Disk& disk)
+{
+  const std::vector<Face_indices>& faces = disk.faces_indices();
+  return std::vector<Face_indices>(faces.begin(), faces.begin() + static_cast<std::ptrdiff_t>(disk.number_of_real_faces()));
+}
+
+// The angle distortion of the real faces of a disk (the vertices of the holes count as border
+// vertices).
 template <class Disk>
 Angle_distortion disk_angle_distortion(const Disk& disk)
 {
@@ -113,11 +121,7 @@ Angle_distortion disk_angle_distortion(const Disk& disk)
   for(const std::vector<int>& hole : disk.hole_loops())
     for(int b : hole)
       on_border[static_cast<std::size_t>(b)] = true;
-  const std::vector<Face_indices>& faces = disk.faces_indices();
-  return Angle_distortion(disk.points(),
-                          std::vector<Face_indices>(faces.begin(), faces.begin() +
-                                                    static_cast<std::ptrdiff_t>(disk.number_of_real_faces())),
-                          on_border, n);
+  return Angle_distortion(disk.points(), disk_real_faces(disk), on_border, n);
 }
 
 } // namespace internal
