@@ -143,28 +143,28 @@ void write_border_choice(Json_writer& j, const Run_facts& f)
 {
   const SMP::Parameterization_report& r = f.result.report;
   j.begin_object("border_choice").member("mode", border_name(f.options.border));
+  // a candidate's members (its figures null when it is not valid)
+  const auto candidate = [&](const SMP::Border_candidate& c) -> Json_writer& {
+    return j.member("kind", candidate_kind(c, f.options.distance))
+      .member("blend", c.blend)
+      .member("mean_value_interior", c.mean_value_interior)
+      .member("valid", c.valid)
+      .member("angle_distortion", c.objective)
+      .member("area_spread", c.area_spread);
+  };
   if(r.chosen_candidate >= 0)
   {
-    const SMP::Border_candidate& c = r.border_candidates[static_cast<std::size_t>(r.chosen_candidate)];
-    j.begin_object("chosen")
-       .member("index", r.chosen_candidate)
-       .member("kind", candidate_kind(c, f.options.distance))
-       .member("blend", c.blend)
-       .member("mean_value_interior", c.mean_value_interior)
-       .member("angle_distortion", c.objective)
-       .end_object();
+    j.begin_object("chosen").member("index", r.chosen_candidate);
+    candidate(r.border_candidates[static_cast<std::size_t>(r.chosen_candidate)]).end_object();
   }
   else
     j.null_member("chosen");
   j.begin_array("candidates", false);
   for(const SMP::Border_candidate& c : r.border_candidates)
-    j.begin_object()
-       .member("kind", candidate_kind(c, f.options.distance))
-       .member("blend", c.blend)
-       .member("mean_value_interior", c.mean_value_interior)
-       .member("valid", c.valid)
-       .member("angle_distortion", c.objective)  // null when not valid
-       .end_object();
+  {
+    j.begin_object();
+    candidate(c).end_object();
+  }
   j.end_array();
   j.end_object();
 }

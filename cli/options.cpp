@@ -86,18 +86,21 @@ const char* const usage_options =
     "                     the bound on each chart's area spread (area-weighted mean of\n"
     "                     |log(UV area / 3D area)| after one scale of the chart; default 0.2,\n"
     "                     inf: one chart per component wherever its map is one-to-one). A\n"
-    "                     chart that misses a bound is split in two, recursively\n"
+    "                     chart that misses a bound is split in two, recursively. With\n"
+    "                     --single-chart and --border=auto: the bound that ranks the layouts\n"
+    "                     (see --border=auto)\n"
     "  --max-angle-distortion=X\n"
-    "                     the bound on each chart's angle distortion (the paper's; default 0.2)\n"
+    "                     the bound on each chart's angle distortion (the paper's; default\n"
+    "                     0.2); with --single-chart, as --max-area-spread\n"
     "  --min-compactness=X\n"
     "                     the bound on each chart's compactness: its UV area over the square of\n"
     "                     its bounding box's longer side (default 0.125, 0 to 1; 0 keeps long\n"
     "                     strips and rings, which fill the texture badly)\n"
     "  --split=normals|scale\n"
     "                     how a chart that misses a bound is split: two regions grown from the\n"
-    "                     two most different normals (default) or from the smallest and largest\n"
-    "                     conformal scale factors of its map; faces joined by smooth edges move\n"
-    "                     together\n"
+    "                     two faces farthest apart in normal turning plus distance (default) or\n"
+    "                     from the smallest and largest conformal scale factors of its map;\n"
+    "                     faces joined by smooth edges move together\n"
     "  --single-chart     the single-chart parameterization below; each of the following\n"
     "                     options implies it\n"
     "  --seams=FILE.selection.txt\n"
@@ -137,16 +140,19 @@ const char* const usage_options =
     "  --border=auto      (default) the best border of a family, all solved with the one\n"
     "                     factorization of the interior: the circle (arc length), the measured\n"
     "                     border of --center and --distance (default distance: fast-marching,\n"
-    "                     so that one matrix is factorized), the conformal border, and blends\n"
-    "                     toward a convex border of the members whose own layout folds. The\n"
-    "                     valid layout of lowest angle distortion is kept; the summary names\n"
-    "                     it, --json lists every candidate\n"
+    "                     so that one matrix is factorized), the conformal border, where it\n"
+    "                     overlaps itself the conformal-lengths border, and blends toward a\n"
+    "                     convex border of the members whose own layout folds. Kept: the valid\n"
+    "                     layout of lowest angle distortion among those within the bounds\n"
+    "                     (--max-area-spread, --max-angle-distortion), otherwise of lowest\n"
+    "                     product of angle distortion and area spread over their bounds; the\n"
+    "                     summary names it, --json lists every candidate with both figures\n"
     "  --border=conformal the conformal border (Boundary First Flattening's border with\n"
     "                     boundary scale factors 0): near-conformal, one factorization\n"
     "  --border=conformal-lengths\n"
     "                     the conformal border, or where it overlaps itself its blend toward\n"
-    "                     the circle with conformal lengths (one more factorization; can crush\n"
-    "                     limbs: not tried by auto)\n"
+    "                     the circle with conformal lengths (one more factorization; far less\n"
+    "                     angle distortion, can crush limbs)\n"
     "  --border=measured  the paper's measured border at the --distance distances\n"
     "  --border=circle    CGAL's circle with arc-length angles\n"
     "  --solver=NAME      sparse Cholesky factorization: cholmod (CHOLMOD supernodal, AMD\n"
@@ -460,11 +466,13 @@ private:
     for(const char* name : {"--border", "--center", "--distance", "--seams", "--write-seams", "--solver"})
       if(single_option.empty() && seen(name))
         single_option = name;
-    std::string atlas_option;
-    for(const char* name : {"--resolution", "--gutter", "--max-area-spread", "--max-angle-distortion", "--min-compactness",
-                            "--split"})
+    std::string atlas_option, bound_option;
+    for(const char* name : {"--resolution", "--gutter", "--min-compactness", "--split"})
       if(atlas_option.empty() && seen(name))
         atlas_option = name;
+    for(const char* name : {"--max-area-spread", "--max-angle-distortion"})  // also the automatic border's bound
+      if(bound_option.empty() && seen(name))
+        bound_option = name;
     if(single_option.empty())
     {
       m_o.mode = Mode::atlas;
@@ -481,6 +489,9 @@ private:
     if(!atlas_option.empty())
       return "option " + atlas_option + " (of the atlas) cannot be combined with " + single_option +
              (single_option == "--single-chart" ? std::string() : " (an option of the single-chart mode)");
+    if(!bound_option.empty() && m_o.border != Border::automatic)
+      return "option " + bound_option + " bounds the atlas's charts, or ranks the layouts of --border=auto: it cannot"
+             " be combined with --border=" + border_name(m_o.border);
     return std::string();
   }
 

@@ -274,7 +274,9 @@ SMP::Parameterization_report parameterize_with_solver(Context<TriangleMesh>& c, 
   case mbp_cli::Border::automatic:
     break;
   }
-  return parameterize_with(c, Automatic(measured), traits);
+  return parameterize_with(c, Automatic(measured, SMP::Distortion_bound{c.options.bounds.max_angle_distortion,
+                                                                         c.options.bounds.max_area_spread}),
+                           traits);
 }
 
 // The parameterization with the solver of --solver.

@@ -24,6 +24,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/chart_split.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/charts.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/min_area_rectangle.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/packing.h>
@@ -196,7 +197,7 @@ void unfolded_charts(const SMP::internal::Atlas_triangles& t, const std::vector<
         continue;
       }
     }
-    for(const std::vector<std::size_t>& half : SMP::internal::split_in_two(t, part))
+    for(const std::vector<std::size_t>& half : SMP::internal::split_for_bound(t, part, SMP::SPLIT_BY_NORMALS, nullptr))
       unfolded_charts(t, half, largest, charts);
   }
 }

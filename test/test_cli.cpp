@@ -21,6 +21,7 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 
+#include <CGAL/Surface_mesh_parameterization/Distortion_bound.h>
 #include <CGAL/Surface_mesh_parameterization/Measured_conformal_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/main_border.h>
 
@@ -625,6 +626,9 @@ BOOST_AUTO_TEST_CASE(automatic_border)
   BOOST_TEST(best < 0.2 * circle);
   // the objective is the paper's angle distortion of the written layout
   BOOST_TEST(std::abs(j.get<double>("quality.angle_distortion") - best) <= 1e-9 * best + 1e-15);
+  // and the chosen candidate's area spread is the written layout's
+  const double spread = j.get<double>("quality.area_distortion_mean");
+  BOOST_TEST(std::abs(j.get<double>("border_choice.chosen.area_spread") - spread) <= 1e-9 * spread);
   BOOST_TEST(j.get<std::size_t>("quality.flipped_faces") == 0u);
   // the paper's measured border, run on its own, is not better
   const Run m = scratch.run({path, "measured.obj", "--json", "--border=measured"});
@@ -2529,6 +2533,40 @@ BOOST_AUTO_TEST_CASE(charts_within_bounds)
   BOOST_TEST(contains(summary.out, "| bounds: area spread <= 0.3 (largest "), summary.out);
 }
 
+// With --single-chart the two bounds rank the automatic border's layouts: the spiral ramp's
+// conformal polygon overlaps itself, so the conformal-lengths member is tried; by angle alone
+// it is kept, and the kept layout has the lowest rank of the bound (Distortion_bound, an
+// independent computation from the JSON's figures) whatever the bound.
+BOOST_AUTO_TEST_CASE(single_chart_bounds_rank_the_automatic_border)
+{
+  Scratch scratch;
+  scratch.write("ramp.off", exact_off_text(mbp_test::spiral_ramp()));
+  const double inf = std::numeric_limits<double>::infinity();
+  for(const std::array<std::string, 2> bound : {std::array<std::string, 2>{"inf", "inf"}, {"0.2", "0.2"}, {"inf", "0.01"}})
+    BOOST_TEST_CONTEXT(bound[0] << ", " << bound[1])
+    {
+      const Run r = scratch.run({"ramp.off", "ramp.obj", "--json", "--single-chart",
+                                 "--max-angle-distortion=" + bound[0], "--max-area-spread=" + bound[1]});
+      BOOST_REQUIRE_EQUAL(r.code, 0);
+      const boost::property_tree::ptree j = parse_json(r.out);
+      const SMP::Distortion_bound b{bound[0] == "inf" ? inf : std::stod(bound[0]),
+                                    bound[1] == "inf" ? inf : std::stod(bound[1])};
+      const auto rank = [&](const boost::property_tree::ptree& c) {
+        return c.get<bool>("valid") ? b.rank(c.get<double>("angle_distortion"), c.get<double>("area_spread")) : inf;
+      };
+      const double kept = rank(j.get_child("border_choice.chosen"));
+      bool lengths = false;
+      for(const auto& c : j.get_child("border_choice.candidates"))
+      {
+        BOOST_TEST(kept <= rank(c.second));
+        lengths = lengths || c.second.get<std::string>("kind") == "conformal-lengths";
+      }
+      BOOST_TEST(lengths);
+      if(bound[0] == "inf" && bound[1] == "inf")
+        BOOST_TEST(j.get<std::string>("border_choice.chosen.kind") == "conformal-lengths");
+    }
+}
+
 BOOST_AUTO_TEST_CASE(default_run_is_an_atlas)
 {
   // no option: the atlas; the grid is a disk: one chart
@@ -2668,8 +2706,11 @@ BOOST_AUTO_TEST_CASE(atlas_options_and_failures)
     {{"two.off", "--max-area-spread=0.1x"}, "bad value '0.1x' of --max-area-spread"},
     {{"two.off", "--min-compactness=2"}, "value 2 of --min-compactness is out of range (expected a number from 0 to 1)"},
     {{"two.off", "--split=curvature"}, "unknown value 'curvature' of --split (expected normals or scale)"},
-    {{"two.off", "--single-chart", "--max-area-spread=0.1"},
-     "option --max-area-spread (of the atlas) cannot be combined with --single-chart"},
+    {{"two.off", "--single-chart", "--min-compactness=0.1"},
+     "option --min-compactness (of the atlas) cannot be combined with --single-chart"},
+    {{"two.off", "--border=measured", "--max-area-spread=0.1"},
+     "option --max-area-spread bounds the atlas's charts, or ranks the layouts of --border=auto: it cannot be combined "
+     "with --border=measured"},
   };
   for(const auto& u : usage)
     BOOST_TEST_CONTEXT(u.first.back())

@@ -989,9 +989,16 @@ BOOST_AUTO_TEST_CASE(real_disks_automatic_border, MBP_EXTENDED_TIER)
       const SMP::Parameterization_quality q = SMP::measure_quality(m, faces(m), uv);
       BOOST_TEST(q.flipped_faces == 0u);
       BOOST_TEST(SMP::is_one_to_one_uv_map(m, faces(m), uv));
+      // on these disks the bound's rank keeps the valid layout of lowest angle distortion
+      const SMP::Border_candidate& kept = r.border_candidates[std::size_t(r.chosen_candidate)];
       for(const SMP::Border_candidate& c : r.border_candidates)
+      {
         if(c.valid)
           BOOST_TEST(q.angle_distortion <= c.objective * (1. + 1e-9) + 1e-15);
+        BOOST_TEST(candidate_rank(SMP::Distortion_bound(), kept) <= candidate_rank(SMP::Distortion_bound(), c));
+      }
+      // where the conformal polygon overlaps itself (horse), the conformal-length member is kept
+      BOOST_TEST((r.conformal_blend > 0.) == (r.kept_border == SMP::CONFORMAL_LENGTHS));
       double circle_distortion = std::numeric_limits<double>::quiet_NaN();
       if(flatten<SMP::Circular_border>(m, circle) == SMP::OK)
         circle_distortion = angle_distortion(m, circle);

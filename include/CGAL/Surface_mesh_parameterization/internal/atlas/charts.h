@@ -156,22 +156,6 @@ inline std::vector<std::array<int, 3> > fan_vertex_ids(const Atlas_triangles& t,
   return ids;
 }
 
-// Breadth-first distances (in faces) from `seed` over the subset.
-inline std::vector<int> face_distances(const std::vector<std::array<int, 3> >& neighbors, std::size_t seed)
-{
-  std::vector<int> distance(neighbors.size(), -1);
-  std::vector<std::size_t> queue(1, seed);
-  distance[seed] = 0;
-  for(std::size_t q = 0; q < queue.size(); ++q)
-    for(int g : neighbors[queue[q]])
-      if(g >= 0 && distance[std::size_t(g)] < 0)
-      {
-        distance[std::size_t(g)] = distance[queue[q]] + 1;
-        queue.push_back(std::size_t(g));
-      }
-  return distance;
-}
-
 // The part of each face of a subset: the part `side` gives to the first face of its input
 // polygon, so that no input polygon is split; when that leaves a part empty, the polygon of the
 // last face goes to it (or the last face alone, when the subset is one polygon).
@@ -191,29 +175,6 @@ inline std::vector<int> parts_keeping_polygons(const Atlas_triangles& t, const s
         part[i] = 1 - part[i];
   }
   return part;
-}
-
-// A connected face subset split in two: the faces nearer (in faces, ties to the first) to one
-// of two far apart faces (the farthest from the first face, and the farthest from that one),
-// input polygons kept whole (parts_keeping_polygons()). Each part is then split into its
-// connected components by the caller.
-inline std::array<std::vector<std::size_t>, 2> split_in_two(const Atlas_triangles& t, const std::vector<std::size_t>& faces)
-{
-  const std::vector<std::array<int, 3> > neighbors = subset_neighbors(t, faces);
-  auto farthest = [](const std::vector<int>& d) {
-    return std::size_t(std::max_element(d.begin(), d.end()) - d.begin());
-  };
-  const std::size_t a = farthest(face_distances(neighbors, 0));
-  const std::vector<int> from_a = face_distances(neighbors, a);
-  const std::vector<int> from_b = face_distances(neighbors, farthest(from_a));
-  std::vector<int> side(faces.size());
-  for(std::size_t i = 0; i < faces.size(); ++i)
-    side[i] = (from_b[i] < from_a[i]) ? 1 : 0;
-  const std::vector<int> part = parts_keeping_polygons(t, faces, side);
-  std::array<std::vector<std::size_t>, 2> parts;
-  for(std::size_t i = 0; i < faces.size(); ++i)
-    parts[std::size_t(part[i])].push_back(faces[i]);
-  return parts;
 }
 
 // The UV triangle of a 3D triangle with its edge (p0, p1) along +u: an isometry.
