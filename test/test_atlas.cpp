@@ -532,6 +532,31 @@ BOOST_AUTO_TEST_CASE(corners_a_rounding_apart_are_welded)
   BOOST_CHECK(chart.corners[1][0] == Eigen::Vector2d(0., 3.));
 }
 
+// A fan around the origin whose last triangle comes back to within `gap` of the first one's
+// edge, not joined to it (a T-junction's crack of a CAD mesh): its unfolding is the plane
+// itself. Within the clearance (relative 1e-10) the chart is refused, since the packing's
+// rotation and scale could round it over; a real gap passes; the atlas of the crack has no
+// overlapping pair.
+BOOST_AUTO_TEST_CASE(a_crack_within_the_clearance_is_not_one_to_one)
+{
+  for(double gap : {1e-14, 1e-12, 1e-3})
+    BOOST_TEST_CONTEXT("gap " << gap)
+    {
+      Soup s;
+      s.points = {{{0., 0., 0.}}, {{2., 0., 0.}}, {{1., 1., 0.}}, {{-1., 0., 0.}}, {{0.5, -1., 0.}}, {{1., -gap, 0.}}};
+      s.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}};
+      SMP::internal::Atlas_triangles t;
+      for(const auto& p : s.points)
+        t.points.emplace_back(p[0], p[1], p[2]);
+      for(const auto& f : s.faces)
+        t.faces.push_back({{int(f[0]), int(f[1]), int(f[2])}});
+      const SMP::internal::Atlas_chart chart = SMP::internal::unfold_isometrically(t, {0, 1, 2, 3});
+      BOOST_TEST(SMP::internal::is_one_to_one_chart(t, chart) == (gap > 1e-9));
+      const Atlas_output a = check_soup(s, true, SMP::Atlas_options());
+      BOOST_TEST((gap > 1e-9 ? a.report.charts.size() == 1u : a.report.charts.size() >= 2u));
+    }
+}
+
 // ----------------------------------------------------------- core tier: CGAL's data meshes
 
 namespace {

@@ -171,14 +171,15 @@ inline bool flatten_with_seams(Subset_surface& s, const Atlas_triangles& t, cons
 // One chart of a connected face subset when the parameterizers (or, failing them, the
 // isometric unfolding) give a one-to-one map; false when the subset must be split. The
 // parameterizer's own check (no flipped face, a simple border: a one-to-one map) needs no
-// second one here, unless corners were welded (weld_rounded_corners()).
+// second one here, unless corners were welded (weld_rounded_corners()); its border must keep
+// the clearance still (chart_border_is_clear()), which the packing's rounding needs.
 inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size_t>& faces, const Atlas_options& options,
                            Atlas_chart& chart)
 {
   Subset_surface s = make_subset_surface(t, faces);
   chart.faces = faces;
   if(s.built && (is_topological_disk(s.mesh) ? flatten_disk(s, options, chart) : flatten_with_seams(s, t, faces, options, chart)))
-    return !weld_rounded_corners(t, chart) || is_one_to_one_chart(t, chart);
+    return weld_rounded_corners(t, chart) ? is_one_to_one_chart(t, chart) : chart_border_is_clear(t, chart);
   chart = unfold_isometrically(t, faces);
   return is_one_to_one_chart(t, chart);
 }

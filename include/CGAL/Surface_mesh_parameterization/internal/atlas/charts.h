@@ -298,26 +298,80 @@ inline Atlas_chart unfold_isometrically(const Atlas_triangles& t, const std::vec
   return chart;
 }
 
-// Whether a chart is one-to-one: every UV triangle counterclockwise, and no two overlapping.
-// Two corners are the same UV vertex when they have the same vertex and the same UV.
-inline bool is_one_to_one_chart(const Atlas_triangles& t, const Atlas_chart& chart)
+// The UV vertices of a chart: two corners are the same UV vertex when they have the same
+// vertex and the same UV; `vertices` gets each face's, `uv` each UV vertex's UV.
+inline void chart_uv_vertices(const Atlas_triangles& t, const Atlas_chart& chart,
+                              std::vector<std::array<std::size_t, 3> >& vertices, std::vector<Eigen::Vector2d>& uv)
 {
   std::map<std::pair<int, std::pair<double, double> >, std::size_t> ids;
-  std::vector<std::array<std::size_t, 3> > vertices(chart.faces.size());
+  vertices.resize(chart.faces.size());
+  uv.clear();
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector2d& p = chart.corners[i][k];
+      const auto key = std::make_pair(t.faces[chart.faces[i]][k], std::make_pair(p.x(), p.y()));
+      const auto inserted = ids.emplace(key, ids.size());
+      if(inserted.second)
+        uv.push_back(p);
+      vertices[i][k] = inserted.first->second;
+    }
+}
+
+// The clearance of a chart's border, relative to the diagonal of its UV bounding box: far
+// above the rounding of the packing's rotation and scale (about 1e-13 of a chart of a
+// thousandth of the atlas), far below any gap a map means.
+constexpr double chart_clearance = 1e-10;
+
+// Whether the border of a one-to-one chart (its edges used by one face) keeps the clearance
+// from itself (segments_within_clearance()). Two triangles of a one-to-one map that come near
+// each other away from their shared vertices bring the border near itself there (a T-junction
+// of a CAD mesh unfolds to a border vertex on a border edge), which the packing's rotation
+// and scale could round into an overlap.
+inline bool chart_border_is_clear(const std::vector<std::array<std::size_t, 3> >& vertices,
+                                  const std::vector<Eigen::Vector2d>& uv)
+{
+  std::map<std::pair<std::size_t, std::size_t>, int> uses;
+  for(const std::array<std::size_t, 3>& v : vertices)
+    for(std::size_t k = 0; k < 3; ++k)
+      ++uses[std::minmax(v[k], v[(k + 1) % 3])];
+  std::vector<std::array<int, 2> > border;
+  Eigen::AlignedBox2d box;
+  for(const auto& edge : uses)
+    if(edge.second == 1)
+    {
+      border.push_back({{int(edge.first.first), int(edge.first.second)}});
+      box.extend(uv[edge.first.first]).extend(uv[edge.first.second]);
+    }
+  return border.empty() || !segments_within_clearance(uv, border, chart_clearance * box.diagonal().norm());
+}
+
+// Whether a parameterizer's chart, one-to-one by the parameterizer's exact check, keeps the
+// clearance of its border.
+inline bool chart_border_is_clear(const Atlas_triangles& t, const Atlas_chart& chart)
+{
+  std::vector<std::array<std::size_t, 3> > vertices;
+  std::vector<Eigen::Vector2d> uv;
+  chart_uv_vertices(t, chart, vertices, uv);
+  return chart_border_is_clear(vertices, uv);
+}
+
+// Whether a chart is one-to-one: every UV triangle counterclockwise, no two overlapping, and
+// its border clear of itself (chart_border_is_clear()).
+inline bool is_one_to_one_chart(const Atlas_triangles& t, const Atlas_chart& chart)
+{
+  std::vector<std::array<std::size_t, 3> > vertices;
+  std::vector<Eigen::Vector2d> uv;
+  chart_uv_vertices(t, chart, vertices, uv);
   std::vector<std::array<Validity_kernel::Point_2, 3> > corners(chart.faces.size());
   for(std::size_t i = 0; i < chart.faces.size(); ++i)
   {
     for(std::size_t k = 0; k < 3; ++k)
-    {
-      const Eigen::Vector2d& uv = chart.corners[i][k];
-      const auto key = std::make_pair(t.faces[chart.faces[i]][k], std::make_pair(uv.x(), uv.y()));
-      vertices[i][k] = ids.emplace(key, ids.size()).first->second;
-      corners[i][k] = exact_point(uv);
-    }
+      corners[i][k] = exact_point(chart.corners[i][k]);
     if(CGAL::orientation(corners[i][0], corners[i][1], corners[i][2]) != CGAL::LEFT_TURN)
       return false;
   }
-  return !any_uv_triangles_overlap(vertices, corners);
+  return !any_uv_triangles_overlap(vertices, corners) && chart_border_is_clear(vertices, uv);
 }
 
 // The area spread (area_spread.h) and the areas of a chart.

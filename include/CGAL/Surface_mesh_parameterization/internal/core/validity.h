@@ -28,12 +28,14 @@
 
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/squared_distance_2.h>
 
 #include <Eigen/Core>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -111,6 +113,42 @@ inline bool non_adjacent_segments_meet(const std::vector<Eigen::Vector2d>& uv,
       if(s[0] == t[0] || s[0] == t[1] || s[1] == t[0] || s[1] == t[1])
         continue;  // consecutive segments of one curve
       if(CGAL::do_intersect(segment(ranges[i].segment), segment(ranges[j].segment)))
+        return true;
+    }
+  return false;
+}
+
+// Whether two of the segments (pairs of indices into `uv`) come within `clearance` of each
+// other: two that share no end index anywhere, two that share one (consecutive along a
+// curve) by the other end of one against the other one (a spike, or a crack between them). A
+// curve that passes is a rounding of the coordinates away from meeting itself. A sweep along x
+// tests the pairs whose x-ranges, grown by the clearance, overlap.
+inline bool segments_within_clearance(const std::vector<Eigen::Vector2d>& uv,
+                                      const std::vector<std::array<int, 2> >& segments, double clearance)
+{
+  typedef Validity_kernel::Point_2 Point;
+  typedef Validity_kernel::Segment_2 Segment;
+  std::vector<std::pair<double, std::size_t> > starts;  // (xmin - clearance, segment)
+  std::vector<double> xmax(segments.size());
+  for(std::size_t s = 0; s < segments.size(); ++s)
+  {
+    const double xa = uv[std::size_t(segments[s][0])].x(), xb = uv[std::size_t(segments[s][1])].x();
+    starts.emplace_back((std::min)(xa, xb) - clearance, s);
+    xmax[s] = (std::max)(xa, xb) + clearance;
+  }
+  std::sort(starts.begin(), starts.end());
+  const double c2 = clearance * clearance;
+  auto point = [&](int i) { return exact_point(uv[std::size_t(i)]); };
+  auto segment = [&](std::size_t s) { return Segment(point(segments[s][0]), point(segments[s][1])); };
+  auto near = [&](const Point& p, std::size_t s) { return CGAL::to_double(CGAL::squared_distance(p, segment(s))) < c2; };
+  for(std::size_t i = 0; i < starts.size(); ++i)
+    for(std::size_t j = i + 1; j < starts.size() && starts[j].first <= xmax[starts[i].second]; ++j)
+    {
+      const std::size_t a = starts[i].second, b = starts[j].second;
+      const std::array<int, 2>&s = segments[a], &t = segments[b];
+      const int shared = (s[0] == t[0] || s[0] == t[1]) ? s[0] : (s[1] == t[0] || s[1] == t[1]) ? s[1] : -1;
+      if(shared < 0 ? CGAL::to_double(CGAL::squared_distance(segment(a), segment(b))) < c2
+                    : near(point(s[0] == shared ? s[1] : s[0]), b) || near(point(t[0] == shared ? t[1] : t[0]), a))
         return true;
     }
   return false;
