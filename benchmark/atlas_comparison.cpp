@@ -16,6 +16,8 @@
 //   atlas_comparison [--only=NAME]... [--mesh=FILE]... [--xatlas-only] [--sweep=B,B,...] [--out=DIR]
 //                    [--timeout=SECONDS] [--ours=PROGRAM] [--xatlas=PROGRAM]
 //                    [--atlas-dir=DIR] [--meshes-dir=DIR]
+//   atlas_comparison --disks [--only=NAME]... [--mesh=FILE]... [--out=DIR] [--timeout=SECONDS]
+//                    [--ours=PROGRAM] [--bff=PROGRAM] [--meshes-dir=DIR]
 //   atlas_comparison --self-test [--out=DIR]
 //
 //   --only=NAME     only the mesh of this file name (repeatable)
@@ -31,6 +33,12 @@
 //   --timeout=S     a run is killed after S seconds of wall time (default 600)
 //   --ours=PROGRAM  our command-line program (default: measured_parameterization of this build)
 //   --xatlas=PROGRAM  xatlas's driver (default: ../shared/peers/xatlas-atlas beside the project)
+//   --disks         issue 23's disk target instead: ours at its defaults against Boundary First
+//                   Flattening's command line on the disks of the meshes folder (those the other
+//                   mode skips; the atlas folder is not used; a --mesh file is kept if it is a
+//                   disk); --xatlas-only, --sweep, --xatlas and --atlas-dir have no effect
+//   --bff=PROGRAM   BFF's command line for --disks (default: ../shared/peers/bff-command-line
+//                   beside the project)
 //   --self-test     checks the measures on hand-made OBJs with known answers; exit 1 on failure
 //
 // Meshes: every file of the atlas folder; of the meshes folder, those that are not disks, decided
@@ -90,6 +98,18 @@
 //                triangles touching at a shared edge or vertex are not overlaps
 //   s, MB        wall-clock seconds and peak resident set (ru_maxrss) of the whole process
 //
+// Disks (--disks): `ours IN OUT.obj --json` as above and `bff-command-line IN.obj OUT.obj`
+// (stdout and stderr: NAME.bff.log; no option: the conformal map with boundary scale factors 0,
+// one chart, not checked for folds), through the same trampoline. BFF reads OBJ only: another
+// input is written (points and polygons as read, %.17g) as NAME.bff-in.obj into --out first.
+// Both OBJs are measured by the same code (BFF's: one vt per vertex, positions and UVs printed
+// with 6 decimals; UVs outside [0,1]^2 are not a failure). Per disk the target is "met" when ours
+// has 0 flips, 0 overlapping pairs, angle <= 1.25 x BFF's and area spread <= max(0.25, BFF's);
+// a BFF failure is reported, never measured (the disk then misses: nothing to compare with).
+// Its summary: the disks that meet the target, how many maps of each are one-to-one, the medians
+// (angles, ratio, area spreads) over the disks both completed, the disks ours splits although
+// BFF's one chart is one-to-one within 0.25 (informative only), and the missed disks with why.
+//
 // Summary: median utilization of each program (and on the meshes both completed), median time
 // ratio ours / xatlas on the meshes of >= 10000 input polygons, the slowest mesh, and the
 // meshes where a target of issue 22 is missed (every mesh: exit 0, 100% UV corners, 0 flips,
@@ -146,6 +166,9 @@
 #endif
 #ifndef MBP_CLI_PROGRAM
 #define MBP_CLI_PROGRAM ""
+#endif
+#ifndef MBP_BFF_PROGRAM
+#define MBP_BFF_PROGRAM ""
 #endif
 
 namespace {
@@ -1172,6 +1195,7 @@ struct Mesh_entry
   std::string path;
   std::string why;   // why it is in the benchmark ("atlas folder", or its topology)
   std::size_t polygons = 0, triangles = 0;
+  std::size_t vertices = 0;  // points as read
 };
 
 struct Options
@@ -1179,9 +1203,10 @@ struct Options
   std::vector<std::string> only, extra;
   std::vector<std::string> sweep;  // --sweep: bounds of --max-area-spread
   bool xatlas_only = false, self_test = false;
+  bool disks = false;  // --disks: the disks against BFF
   std::string out = "/tmp/mbp-atlas";
   double timeout = 600.;
-  std::string ours = MBP_CLI_PROGRAM, xatlas = MBP_XATLAS_PROGRAM;
+  std::string ours = MBP_CLI_PROGRAM, xatlas = MBP_XATLAS_PROGRAM, bff = MBP_BFF_PROGRAM;
   std::string atlas_dir = MBP_ATLAS_DIR, meshes_dir = MBP_MESH_DIR;
 };
 
@@ -1190,11 +1215,12 @@ bool selected(const Options& o, const std::string& name)
   return o.only.empty() || std::find(o.only.begin(), o.only.end(), name) != o.only.end();
 }
 
-// Adds the mesh when it can be read and `keep` says so; prints the decision.
-void consider(const fs::path& file, bool atlas_folder, std::vector<Mesh_entry>& meshes)
+// Adds the mesh when it can be read and is kept (`disks`: when it is a disk; otherwise when it
+// is in the atlas folder or not a disk); prints the decision.
+void consider(const fs::path& file, bool atlas_folder, bool disks, std::vector<Mesh_entry>& meshes)
 {
   Input in;
-  Mesh_entry e{file.filename().string(), file.string(), "", 0, 0};
+  Mesh_entry e{file.filename().string(), file.string(), "", 0, 0, 0};
   if(!read_input(file.string(), in))
   {
     std::cout << "- " << e.name << ": cannot be read, skipped\n";
@@ -1203,10 +1229,11 @@ void consider(const fs::path& file, bool atlas_folder, std::vector<Mesh_entry>& 
   const Topology t = soup_topology(in);
   e.polygons = in.polygons.size();
   e.triangles = in.triangles;
+  e.vertices = in.points.size();
   e.why = describe(t);
-  const bool keep = atlas_folder || !is_disk(t);
-  std::cout << "- " << e.name << ": " << e.polygons << " polygons, " << e.why << (keep ? ": kept" : ": disk, skipped")
-            << "\n";
+  const bool keep = disks ? is_disk(t) : atlas_folder || !is_disk(t);
+  std::cout << "- " << e.name << ": " << e.polygons << " polygons, " << e.why
+            << (keep ? ": kept" : is_disk(t) ? ": disk, skipped" : ": not a disk, skipped") << "\n";
   if(keep)
     meshes.push_back(e);
 }
@@ -1214,19 +1241,22 @@ void consider(const fs::path& file, bool atlas_folder, std::vector<Mesh_entry>& 
 std::vector<Mesh_entry> list_meshes(const Options& o)
 {
   std::vector<Mesh_entry> meshes;
-  const std::vector<std::pair<std::string, bool> > folders = {{o.atlas_dir, true}, {o.meshes_dir, false}};
+  std::vector<std::pair<std::string, bool> > folders = {{o.atlas_dir, true}, {o.meshes_dir, false}};
+  if(o.disks)
+    folders.erase(folders.begin());  // no atlas folder
   for(const auto& [dir, atlas_folder] : folders)
   {
-    std::cout << "\n" << (atlas_folder ? "Atlas meshes" : "Project meshes (non-disks kept)") << ": " << dir << "\n\n";
+    const char* kept = o.disks ? "Project meshes (disks kept)" : "Project meshes (non-disks kept)";
+    std::cout << "\n" << (atlas_folder ? "Atlas meshes" : kept) << ": " << dir << "\n\n";
     std::error_code ec;  // an unreadable folder lists no mesh
     for(const fs::path& file : mbp_cli::mesh_files_in(dir, ec))
       if(selected(o, file.filename().string()))
-        consider(file, atlas_folder, meshes);
+        consider(file, atlas_folder, o.disks, meshes);
   }
   if(!o.extra.empty())
     std::cout << "\nExtra meshes (--mesh)\n\n";
   for(const std::string& file : o.extra)
-    consider(fs::path(file), true, meshes);
+    consider(fs::path(file), true, o.disks, meshes);
   return meshes;
 }
 
@@ -1235,7 +1265,7 @@ std::vector<Mesh_entry> list_meshes(const Options& o)
 
 struct Side
 {
-  std::string program;  // "ours" or "xatlas"
+  std::string program;  // "ours", "xatlas" or "BFF"
   Process process;
   bool measured = false;
   std::string problem;  // why it was not measured, or a warning
@@ -1322,7 +1352,39 @@ void measure_output(const Mesh_entry& mesh, const std::string& obj_path, Side& s
   side.uv_corners_missing = expected - covered;
 }
 
-// One run: xatlas, or ours with `args` added (`label` names its files: NAME.LABEL.obj).
+// Writes the input (points and polygons as read) as an OBJ at full precision.
+bool write_input_obj(const Input& in, const std::string& path)
+{
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  if(!f)
+    return false;
+  for(const K::Point_3& p : in.points)
+    std::fprintf(f, "v %.17g %.17g %.17g\n", p.x(), p.y(), p.z());
+  for(const std::vector<std::size_t>& polygon : in.polygons)
+  {
+    std::fputc('f', f);
+    for(std::size_t v : polygon)
+      std::fprintf(f, " %zu", v + 1);
+    std::fputc('\n', f);
+  }
+  return std::fclose(f) == 0;
+}
+
+// BFF's input (it reads OBJ only): the mesh's file when it is an OBJ, otherwise the input
+// written as NAME.bff-in.obj into --out; empty when that fails.
+std::string bff_input(const Mesh_entry& mesh, const Options& o)
+{
+  std::string extension = fs::path(mesh.path).extension().string();
+  for(char& c : extension)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  if(extension == ".obj")
+    return mesh.path;
+  Input in;
+  const std::string path = (fs::path(o.out) / (mesh.name + ".bff-in.obj")).string();
+  return read_input(mesh.path, in) && write_input_obj(in, path) ? path : "";
+}
+
+// One run: xatlas, BFF, or ours with `args` added (`label` names its files: NAME.LABEL.obj).
 Side run_side(const std::string& program, const Mesh_entry& mesh, const Options& o, const std::string& label,
               const std::vector<std::string>& args = {})
 {
@@ -1332,8 +1394,14 @@ Side run_side(const std::string& program, const Mesh_entry& mesh, const Options&
   const std::string obj = base + ".obj";
   std::error_code ec;
   fs::remove(obj, ec);
+  const std::string input = program == "BFF" ? bff_input(mesh, o) : mesh.path;
+  if(input.empty())
+  {
+    side.problem = "the input could not be written as OBJ";
+    return side;
+  }
   const std::string out = base + (program == "ours" ? ".json" : ".log");
-  std::vector<std::string> command = {program == "ours" ? o.ours : o.xatlas, mesh.path, obj};
+  std::vector<std::string> command = {program == "ours" ? o.ours : program == "BFF" ? o.bff : o.xatlas, input, obj};
   if(program == "ours")
     command.push_back("--json");
   command.insert(command.end(), args.begin(), args.end());
@@ -1681,6 +1749,189 @@ void print_bound_targets(const std::vector<Row>& rows)
 }
 
 // ---------------------------------------------------------------------------------------
+// Issue 23: every disk against Boundary First Flattening (--disks)
+
+struct Disk_row
+{
+  Mesh_entry mesh;
+  Side ours, bff;
+};
+
+bool one_to_one(const Side& s)
+{
+  return s.measured && s.metrics.flips == 0 && s.metrics.overlaps.pairs == 0 && s.metrics.overlaps.complete;
+}
+
+// "exit N" of a run that failed, or why its output was not measured.
+std::string not_measured(const Side& s)
+{
+  return s.process.ok() ? "not measured (" + s.problem + ")" : "exit " + s.process.status();
+}
+
+// The parts of the disk target that ours misses against BFF; empty: met.
+std::vector<std::string> disk_misses(const Disk_row& r)
+{
+  if(!r.ours.measured)
+    return {"ours " + not_measured(r.ours)};
+  const Metrics &m = r.ours.metrics, &b = r.bff.metrics;
+  std::vector<std::string> missed;
+  if(m.flips > 0)
+    missed.push_back(std::to_string(m.flips) + " flips");
+  if(m.overlaps.pairs > 0 || !m.overlaps.complete)
+    missed.push_back(overlaps_cell(m.overlaps) + " overlapping pairs");
+  if(!r.bff.measured)
+    missed.push_back("nothing to compare with: BFF " + not_measured(r.bff));
+  else if(!(m.angle <= 1.25 * b.angle))
+    missed.push_back("angle " + fixed(m.angle / b.angle, 3) + "x BFF's (> 1.25x)");
+  if(r.bff.measured && !(m.area_spread <= std::max(0.25, b.area_spread)))
+    missed.push_back("area spread " + fixed(m.area_spread, 3) + " > max(0.25, BFF's " + fixed(b.area_spread, 3) + ")");
+  return missed;
+}
+
+std::string joined(const std::vector<std::string>& parts, const std::string& separator)
+{
+  std::string text;
+  for(std::size_t i = 0; i < parts.size(); ++i)
+    text += (i == 0 ? "" : separator) + parts[i];
+  return text;
+}
+
+std::string disk_verdict(const Disk_row& r)
+{
+  const std::vector<std::string> missed = disk_misses(r);
+  return missed.empty() ? "met" : "missed: " + joined(missed, "; ");
+}
+
+// `digits` significant digits (angles of developable disks are far below 0.01 degree).
+std::string significant(double x, int digits)
+{
+  if(!std::isfinite(x))
+    return "-";
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*g", digits, x);
+  return buffer;
+}
+
+// Flips, overlapping pairs, area spread, angle and time of one side (ours: charts first).
+void append_disk_side(const Side& s, bool charts, std::vector<std::string>& cells)
+{
+  const std::string time = s.process.ran ? fixed(s.process.seconds, 2) : "-";
+  if(!s.measured)
+  {
+    cells.push_back(not_measured(s));
+    cells.resize(cells.size() + (charts ? 4 : 3));
+    cells.push_back(time);
+    return;
+  }
+  const Metrics& m = s.metrics;
+  if(charts)
+    cells.push_back(std::to_string(m.charts));
+  cells.insert(cells.end(), {std::to_string(m.flips), overlaps_cell(m.overlaps), fixed(m.area_spread, 3),
+                             significant(m.angle, 3), time});
+}
+
+void print_disk_table(const std::vector<Disk_row>& rows)
+{
+  std::cout << "\n### Disks against Boundary First Flattening (issue 23)\n\n"
+               "angle: the mean over the triangles' corners of |UV angle - 3D angle|, in degrees, measured by this"
+               " program on both output OBJs (not the paper's angle distortion); area spread: the area-weighted mean"
+               " |log| of the UV / 3D area ratio at one global scale; charts: connected components of the output."
+               " BFF prints its positions and UVs with 6 decimals (ours: full precision), so its angle on a"
+               " developable disk does not reach 0."
+               " Target: 0 flips, 0 overlapping pairs, angle <= 1.25 x BFF's, area spread <= max(0.25, BFF's).\n\n"
+               "| disk | V | ours: charts | ours: flips | ours: overlapping pairs | ours: area spread | ours: angle (deg)"
+               " | ours: time (s) | BFF: flips | BFF: overlapping pairs | BFF: area spread | BFF: angle (deg)"
+               " | BFF: time (s) | angle ours / BFF | verdict |\n"
+               "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|\n";
+  for(const Disk_row& r : rows)
+  {
+    std::vector<std::string> cells = {r.mesh.name, std::to_string(r.mesh.vertices)};
+    append_disk_side(r.ours, true, cells);
+    append_disk_side(r.bff, false, cells);
+    const bool both = r.ours.measured && r.bff.measured;
+    cells.push_back(both ? significant(r.ours.metrics.angle / r.bff.metrics.angle, 3) : "-");
+    cells.push_back(disk_verdict(r));
+    print_cells(cells);
+  }
+}
+
+// Medians over the disks where both sides were measured.
+void print_disk_medians(const std::vector<Disk_row>& rows)
+{
+  std::vector<double> angle_ours, angle_bff, ratio, spread_ours, spread_bff;
+  for(const Disk_row& r : rows)
+    if(r.ours.measured && r.bff.measured)
+    {
+      angle_ours.push_back(r.ours.metrics.angle);
+      angle_bff.push_back(r.bff.metrics.angle);
+      ratio.push_back(r.ours.metrics.angle / r.bff.metrics.angle);
+      spread_ours.push_back(r.ours.metrics.area_spread);
+      spread_bff.push_back(r.bff.metrics.area_spread);
+    }
+  std::cout << "- medians over the " << ratio.size() << " disks where both were measured: angle (deg) ours "
+            << fixed(median(angle_ours), 2) << ", BFF " << fixed(median(angle_bff), 2) << "; angle ours / BFF "
+            << fixed(median(ratio), 3) << " (the median of the per-disk ratios); area spread ours "
+            << fixed(median(spread_ours), 3) << ", BFF " << fixed(median(spread_bff), 3) << "\n";
+}
+
+// Disks ours splits although BFF's one chart is one-to-one within the 0.25 area spread (not part
+// of the verdict: ours' own one chart is another map).
+void print_disk_splits(const std::vector<Disk_row>& rows)
+{
+  std::vector<std::string> split;
+  for(const Disk_row& r : rows)
+    if(r.ours.measured && r.ours.metrics.charts > 1 && one_to_one(r.bff) && r.bff.metrics.area_spread <= 0.25)
+      split.push_back(r.mesh.name + " (" + std::to_string(r.ours.metrics.charts) + " charts; BFF's area spread " +
+                      fixed(r.bff.metrics.area_spread, 3) + ")");
+  std::cout << "- split by ours although BFF's one chart is one-to-one with area spread <= 0.25 (not part of the"
+               " verdict): "
+            << (split.empty() ? "none" : joined(split, ", ")) << "\n";
+}
+
+void print_disk_summary(const std::vector<Disk_row>& rows)
+{
+  std::size_t met = 0, ours_one_to_one = 0, bff_one_to_one = 0;
+  for(const Disk_row& r : rows)
+  {
+    met += disk_misses(r).empty() ? 1 : 0;
+    ours_one_to_one += one_to_one(r.ours) ? 1 : 0;
+    bff_one_to_one += one_to_one(r.bff) ? 1 : 0;
+  }
+  std::cout << "\n### Summary of the disks (issue 23 target)\n\n"
+            << "- target met on " << met << " of " << rows.size() << " disks\n"
+            << "- one-to-one (0 flips, 0 overlapping pairs): ours on " << ours_one_to_one << ", BFF on "
+            << bff_one_to_one << " of " << rows.size() << " (BFF does not check for folds)\n";
+  print_disk_medians(rows);
+  print_disk_splits(rows);
+  std::cout << "- angle is the mean |UV angle - 3D angle| in degrees, measured by this program on both outputs"
+               " (not the paper's angle distortion)\n"
+            << "- disks where the target is missed:\n";
+  for(const Disk_row& r : rows)
+    if(!disk_misses(r).empty())
+      std::cout << "  - " << r.mesh.name << ": " << joined(disk_misses(r), "; ") << "\n";
+  if(met == rows.size())
+    std::cout << "  - none\n";
+}
+
+void print_disk_problems(const std::vector<Disk_row>& rows)
+{
+  std::cout << "\nProblems:\n";
+  std::size_t problems = 0;
+  for(const Disk_row& r : rows)
+    for(const Side* s : {&r.ours, &r.bff})
+    {
+      std::string problem = s->problem;
+      if(s->measured && s->uv_corners_missing > 0)
+        problem += (problem.empty() ? "" : "; ") + uv_corners_cell(*s) + " UV corners";
+      if(!problem.empty())
+        std::cout << "- " << r.mesh.name << ", " << s->program << ": " << problem << "\n";
+      problems += problem.empty() ? 0 : 1;
+    }
+  if(problems == 0)
+    std::cout << "- none\n";
+}
+
+// ---------------------------------------------------------------------------------------
 // Self test: measures of hand-made OBJs with known answers
 
 // Expected values; NaN: not checked; `positive`: checked to be > 0.
@@ -1966,6 +2217,8 @@ bool parse_options(int argc, char** argv, Options& o)
     else if(!value("--timeout=").empty()) o.timeout = std::atof(value("--timeout=").c_str());
     else if(!value("--ours=").empty()) o.ours = value("--ours=");
     else if(!value("--xatlas=").empty()) o.xatlas = value("--xatlas=");
+    else if(a == "--disks") o.disks = true;
+    else if(!value("--bff=").empty()) o.bff = value("--bff=");
     else if(!value("--atlas-dir=").empty()) o.atlas_dir = value("--atlas-dir=");
     else if(!value("--meshes-dir=").empty()) o.meshes_dir = value("--meshes-dir=");
     else
@@ -2028,6 +2281,37 @@ int main_benchmark(const Options& o)
   return 0;
 }
 
+void print_disk_setup(const Options& o)
+{
+  std::cout << "# Disks (issue 23): ours against Boundary First Flattening\n\n"
+            << "- ours: " << o.ours << " IN OUT.obj --json (its defaults)\n"
+            << "- BFF: " << o.bff << " IN.obj OUT.obj (no option: boundary scale factors 0; an input that is not"
+            << " OBJ is written as OBJ first)\n"
+            << "- outputs: " << o.out << "; timeout " << o.timeout << " s per run\n";
+  std::ifstream load("/proc/loadavg");
+  std::string load_1;
+  if(load >> load_1)
+    std::cout << "- 1-minute load average at the start: " << load_1 << "\n";
+}
+
+int main_disks(const Options& o)
+{
+  std::error_code ec;
+  fs::create_directories(o.out, ec);
+  print_disk_setup(o);
+  std::vector<Disk_row> rows;
+  for(const Mesh_entry& mesh : list_meshes(o))
+  {
+    rows.push_back(Disk_row{mesh, run_side("ours", mesh, o, "ours"), run_side("BFF", mesh, o, "bff")});
+    std::cerr << mesh.name << ": ours " << rows.back().ours.process.status() << ", BFF "
+              << rows.back().bff.process.status() << "\n";
+  }
+  print_disk_table(rows);
+  print_disk_summary(rows);
+  print_disk_problems(rows);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -2039,11 +2323,11 @@ int main(int argc, char** argv)
     return 2;
   if(o.self_test)
     return self_test(o);
-  if(!o.xatlas_only && o.ours.empty())
+  if((o.disks || !o.xatlas_only) && o.ours.empty())
   {
     std::cerr << "our program is unknown (the build has no measured_parameterization_cli): give --ours=PROGRAM"
                  " or --xatlas-only\n";
     return 2;
   }
-  return main_benchmark(o);
+  return o.disks ? main_disks(o) : main_benchmark(o);
 }

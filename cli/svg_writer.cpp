@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <tuple>
@@ -92,8 +93,28 @@ std::vector<std::array<std::size_t, 2> > chart_outlines(const Atlas_result& a)
   return outlines;
 }
 
+// Per polygon, its chart's distortion against the bounds: the larger of the chart's area
+// spread and angle distortion, each over its bound (an infinite bound counts 0), at most 1
+// within the bounds (a lone triangle may exceed them); empty when both bounds are infinite.
+std::vector<double> chart_bound_ratios(const Atlas_result& a)
+{
+  const SMP::Atlas_report& r = a.report;
+  const auto over = [](double value, double bound) { return bound < HUGE_VAL && bound > 0. ? value / bound : 0.; };
+  if(!(r.max_area_spread < HUGE_VAL) && !(r.max_angle_distortion < HUGE_VAL))
+    return {};
+  std::vector<double> ratios(a.polygon_chart.size(), 0.);
+  for(std::size_t i = 0; i < ratios.size(); ++i)
+    if(a.polygon_chart[i] < r.charts.size())
+    {
+      const SMP::Atlas_chart_report& c = r.charts[a.polygon_chart[i]];
+      ratios[i] = (std::max)(over(c.area_spread, r.max_area_spread), over(c.angle_distortion, r.max_angle_distortion));
+    }
+  return ratios;
+}
+
 // The picture of an atlas: the unit square framed, the input's polygons at their UVs colored
-// by their area distortion, the charts outlined, the caption and the legend.
+// by their chart's distortion against the bounds (by their own area distortion when the bounds
+// are lifted), the charts outlined, the caption and the legend.
 std::string atlas_picture(const Run_facts& f)
 {
   const Atlas_result& a = f.result.atlas;
@@ -102,7 +123,16 @@ std::string atlas_picture(const Run_facts& f)
   picture.uv = a.uv;
   for(std::size_t i = 0; i < a.soup.number_of_faces(); ++i)
     picture.polygon_end.push_back(a.soup.face_end[i]);
-  picture.face_angle_distortion = a.polygon_area_distortion;
+  picture.face_angle_distortion = chart_bound_ratios(a);
+  if(picture.face_angle_distortion.empty())
+    picture.face_angle_distortion = a.polygon_area_distortion;
+  else
+  {
+    picture.color_lo = 0.01;  // a fixed range, up to the bounds
+    picture.color_hi = 1.;
+    picture.color_title = "distortion per chart against the bounds";
+    picture.color_note = "max(area spread, angle distortion) / bound, log scale";
+  }
   picture.face_flipped.assign(a.soup.number_of_faces(), false);
   picture.outlines = chart_outlines(a);
   picture.unit_square = true;
@@ -110,8 +140,11 @@ std::string atlas_picture(const Run_facts& f)
   picture.center = picture.uv.size();  // none
   picture.frame_label = "texture (" + std::to_string(f.options.resolution) + " texels)";
   picture.outline_label = "chart outlines (" + std::to_string(r.charts.size()) + ")";
-  picture.color_title = "area distortion per polygon";
-  picture.color_note = "|log(UV area / 3D area)|, log scale";
+  if(picture.color_lo == 0.)
+  {
+    picture.color_title = "area distortion per polygon";
+    picture.color_note = "|log(UV area / 3D area)|, log scale";
+  }
   picture.title = f.mesh_name;
   picture.caption.push_back(std::to_string(a.soup.points.size()) + " points, " +
                             std::to_string(a.soup.number_of_faces()) + " polygons: " + atlas_charts_text(f));
