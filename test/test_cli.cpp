@@ -2544,7 +2544,7 @@ BOOST_AUTO_TEST_CASE(single_chart_bounds_rank_the_automatic_border)
   Scratch scratch;
   scratch.write("ramp.off", exact_off_text(mbp_test::spiral_ramp()));
   const double inf = std::numeric_limits<double>::infinity();
-  for(const std::array<std::string, 2> bound : {std::array<std::string, 2>{"inf", "inf"}, {"0.2", "0.2"}, {"inf", "0.01"}})
+  for(const auto& bound : {std::array<std::string, 2>{"inf", "inf"}, {"0.2", "0.2"}, {"inf", "0.01"}})
     BOOST_TEST_CONTEXT(bound[0] << ", " << bound[1])
     {
       const Run r = scratch.run({"ramp.off", "ramp.obj", "--json", "--single-chart",
