@@ -55,7 +55,8 @@ enum Repair
   /// five bisection steps between the member's own border and its convex border, \f$ 1 \f$
   /// (the mean value map also tries the member's own border; after `Automatic_border`, whose
   /// search already tried the discrete conformal blends, only the mean value map is left); the
-  /// valid candidate of lowest angle distortion is kept. At \f$ t = 1 \f$ the border is
+  /// valid candidate of lowest angle distortion (for `Automatic_border`, of lowest rank by its
+  /// `Distortion_bound`) is kept. At \f$ t = 1 \f$ the border is
   /// convex, so the mean value map is valid (Floater's theorem): the repair always succeeds,
   /// up to rounding. The default.
   BLEND_TOWARD_CIRCLE
