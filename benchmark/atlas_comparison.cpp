@@ -2230,16 +2230,22 @@ bool parse_options(int argc, char** argv, Options& o)
   return o.timeout > 0.;
 }
 
-void print_setup(const Options& o)
+// The setup's last lines: where the outputs go, the timeout, the load average at the start.
+void print_outputs_and_load(const Options& o)
 {
-  std::cout << "# Atlas comparison (issue 22): ours against xatlas\n\n"
-            << "- ours: " << (o.xatlas_only ? "not run (--xatlas-only)" : o.ours + " IN OUT.obj --json") << "\n"
-            << "- xatlas: " << o.xatlas << " IN OUT.obj\n"
-            << "- outputs: " << o.out << "; timeout " << o.timeout << " s per run\n";
+  std::cout << "- outputs: " << o.out << "; timeout " << o.timeout << " s per run\n";
   std::ifstream load("/proc/loadavg");
   std::string load_1;
   if(load >> load_1)
     std::cout << "- 1-minute load average at the start: " << load_1 << "\n";
+}
+
+void print_setup(const Options& o)
+{
+  std::cout << "# Atlas comparison (issue 22): ours against xatlas\n\n"
+            << "- ours: " << (o.xatlas_only ? "not run (--xatlas-only)" : o.ours + " IN OUT.obj --json") << "\n"
+            << "- xatlas: " << o.xatlas << " IN OUT.obj\n";
+  print_outputs_and_load(o);
 }
 
 int main_benchmark(const Options& o)
@@ -2286,12 +2292,8 @@ void print_disk_setup(const Options& o)
   std::cout << "# Disks (issue 23): ours against Boundary First Flattening\n\n"
             << "- ours: " << o.ours << " IN OUT.obj --json (its defaults)\n"
             << "- BFF: " << o.bff << " IN.obj OUT.obj (no option: boundary scale factors 0; an input that is not"
-            << " OBJ is written as OBJ first)\n"
-            << "- outputs: " << o.out << "; timeout " << o.timeout << " s per run\n";
-  std::ifstream load("/proc/loadavg");
-  std::string load_1;
-  if(load >> load_1)
-    std::cout << "- 1-minute load average at the start: " << load_1 << "\n";
+            << " OBJ is written as OBJ first)\n";
+  print_outputs_and_load(o);
 }
 
 int main_disks(const Options& o)

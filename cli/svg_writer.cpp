@@ -125,7 +125,11 @@ std::string atlas_picture(const Run_facts& f)
     picture.polygon_end.push_back(a.soup.face_end[i]);
   picture.face_angle_distortion = chart_bound_ratios(a);
   if(picture.face_angle_distortion.empty())
+  {
     picture.face_angle_distortion = a.polygon_area_distortion;
+    picture.color_title = "area distortion per polygon";
+    picture.color_note = "|log(UV area / 3D area)|, log scale";
+  }
   else
   {
     picture.color_lo = 0.01;  // a fixed range, up to the bounds
@@ -140,11 +144,6 @@ std::string atlas_picture(const Run_facts& f)
   picture.center = picture.uv.size();  // none
   picture.frame_label = "texture (" + std::to_string(f.options.resolution) + " texels)";
   picture.outline_label = "chart outlines (" + std::to_string(r.charts.size()) + ")";
-  if(picture.color_lo == 0.)
-  {
-    picture.color_title = "area distortion per polygon";
-    picture.color_note = "|log(UV area / 3D area)|, log scale";
-  }
   picture.title = f.mesh_name;
   picture.caption.push_back(std::to_string(a.soup.points.size()) + " points, " +
                             std::to_string(a.soup.number_of_faces()) + " polygons: " + atlas_charts_text(f));
