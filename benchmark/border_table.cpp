@@ -1104,8 +1104,9 @@ void print_summary(const std::vector<Row>& all)
       if(r.info.mean_value)
         ++mean_value;
     }
-    std::printf("Members kept by %s: circle %d, measured %d, conformal %d (of which %d at a blend t > 0, %d with the"
-                " mean value interior)  \n", method_name(m), wins[0], wins[1], wins[2], blended, mean_value);
+    std::printf("Members kept by %s: circle %d, measured %d, conformal %d, conformal lengths %d (of which %d at a blend"
+                " t > 0, %d with the mean value interior)  \n",
+                method_name(m), wins[0], wins[1], wins[2], wins[3], blended, mean_value);
   }
   std::printf("\n");
 

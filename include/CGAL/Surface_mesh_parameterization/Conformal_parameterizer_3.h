@@ -58,7 +58,9 @@ enum Repair
   /// valid candidate of lowest angle distortion (for `Automatic_border`, of lowest rank by its
   /// `Distortion_bound`) is kept. At \f$ t = 1 \f$ the border is
   /// convex, so the mean value map is valid (Floater's theorem): the repair always succeeds,
-  /// up to rounding. The default.
+  /// up to rounding. When rounding defeats it (the circle's mean value map folds, on a disk
+  /// of extreme area distortion), the other members' mean value blends are not searched:
+  /// they would fail the same way. The default.
   BLEND_TOWARD_CIRCLE
 };
 

@@ -137,7 +137,10 @@ Error_code automatic_search(Evaluator& evaluator, const AddMeasured& add_measure
 
 // The repair (blend toward the circle): along each member, the smallest valid blend with the
 // discrete conformal interior (unless a search did it already), then with the mean value
-// interior; the evaluator keeps the best.
+// interior; the evaluator keeps the best. When the circle is a member and its mean value map
+// folds (Floater's theorem makes it one-to-one: only rounding on a badly shaped disk defeats
+// it), the other members' blends toward convex borders are not searched: they fail the same
+// way, and on a large atlas chart that search cost most of the time of its failed repair.
 template <class Evaluator>
 void repair_by_blending(Evaluator& evaluator, const std::vector<Border_family>& members, bool conformal_search)
 {
@@ -152,10 +155,15 @@ void repair_by_blending(Evaluator& evaluator, const std::vector<Border_family>& 
     batch.emplace_back(m, evaluator.members().own_blend(m));
   const std::vector<Border_trial> own = evaluator.evaluate(batch, true);
   std::vector<Border_family> search;
+  bool circle_folds = false;
   for(const Border_trial& t : own)
-    if(!t.valid && t.member != CIRCLE)
+    if(t.valid)
+      continue;
+    else if(t.member == CIRCLE)
+      circle_folds = true;
+    else
       search.push_back(t.member);
-  if(!search.empty())
+  if(!search.empty() && !circle_folds)
     search_smallest_valid_blend(evaluator, search, true);
 }
 
