@@ -36,6 +36,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -343,6 +344,7 @@ BOOST_AUTO_TEST_CASE(gutter_and_resolution_are_kept)
   SMP::Atlas_options options;
   options.resolution = 128;
   options.gutter = 5;
+  options.min_compactness = 0.;  // the rectangles, up to 6 times as long as wide, are kept whole
   const Atlas_output a = check_soup(s, true, options);
   BOOST_CHECK_EQUAL(a.report.charts.size(), 6u);
 }
@@ -446,24 +448,32 @@ double largest_angle_change(const Points& points, const Polygons& polygons, cons
 
 // A developable strip wound 1.5 turns around a cone unrolls to more than a turn: one chart
 // cannot be both one-to-one and undistorted (without bounds: one chart, one-to-one, its area
-// distorted). Within the default bounds: one-to-one, and every quad keeps its shape and its
-// area (at most two charts, each less than a turn).
+// distorted). Within the distortion bounds: one-to-one, and every quad keeps its shape and its
+// area, in two charts, each less than a turn. The default compactness bound (0.3) cuts the
+// shorter one (an arc of about 195 degrees, compactness 0.27) once more across, its UVs kept:
+// three charts, still undistorted.
 BOOST_AUTO_TEST_CASE(strip_around_a_cone)
 {
   const Soup s = mbp_test::strip_around_a_cone(120);
   const Atlas_output one = check_soup(s, true, without_bounds());
   BOOST_CHECK_EQUAL(one.report.charts.size(), 1u);
   BOOST_CHECK_GT(largest_area_distortion(s.points, s.faces, one), 0.1);
-  const Atlas_output a = check_soup(s);
-  BOOST_TEST_MESSAGE("strip around a cone: " << a.report.charts.size() << " charts, " << a.report.splits
-                     << " splits; largest area distortion " << largest_area_distortion(s.points, s.faces, a)
-                     << ", angle change " << largest_angle_change(s.points, s.faces, a) << " (one chart: "
-                     << largest_area_distortion(s.points, s.faces, one) << ", "
-                     << largest_angle_change(s.points, s.faces, one) << ")");
-  BOOST_CHECK_LE(a.report.charts.size(), 2u);
-  BOOST_CHECK_LT(largest_area_distortion(s.points, s.faces, a), 1e-6);
-  BOOST_CHECK_LT(largest_angle_change(s.points, s.faces, a), 1e-6);
-  BOOST_CHECK_EQUAL(clockwise_polygons(s.points, s.faces, a), 0u);
+  SMP::Atlas_options distortion_only;
+  distortion_only.min_compactness = 0.;
+  for(const SMP::Atlas_options& options : {distortion_only, SMP::Atlas_options()})
+  {
+    const Atlas_output a = check_soup(s, true, options);
+    BOOST_TEST_MESSAGE("strip around a cone, compactness >= " << options.min_compactness << ": " << a.report.charts.size()
+                       << " charts, " << a.report.splits << " splits; largest area distortion "
+                       << largest_area_distortion(s.points, s.faces, a) << ", angle change "
+                       << largest_angle_change(s.points, s.faces, a) << " (one chart: "
+                       << largest_area_distortion(s.points, s.faces, one) << ", "
+                       << largest_angle_change(s.points, s.faces, one) << ")");
+    BOOST_CHECK_LE(a.report.charts.size(), options.min_compactness > 0. ? 3u : 2u);
+    BOOST_CHECK_LT(largest_area_distortion(s.points, s.faces, a), 1e-6);
+    BOOST_CHECK_LT(largest_angle_change(s.points, s.faces, a), 1e-6);
+    BOOST_CHECK_EQUAL(clockwise_polygons(s.points, s.faces, a), 0u);
+  }
 }
 
 // A cube: at most six charts, each undistorted (every quad keeps its shape and its area).
@@ -555,6 +565,109 @@ BOOST_AUTO_TEST_CASE(a_crack_within_the_clearance_is_not_one_to_one)
       const Atlas_output a = check_soup(s, true, SMP::Atlas_options());
       BOOST_TEST((gap > 1e-9 ? a.report.charts.size() == 1u : a.report.charts.size() >= 2u));
     }
+}
+
+namespace {
+
+// Unit quads in z = 0 at the cells (i, j), turning counterclockwise seen from +z; shared
+// corners listed once.
+Soup quads_at(const std::vector<std::array<int, 2> >& cells)
+{
+  Soup s;
+  std::map<std::array<int, 2>, std::size_t> id;
+  auto point = [&](int i, int j) {
+    const auto inserted = id.emplace(std::array<int, 2>{{i, j}}, s.points.size());
+    if(inserted.second)
+      s.points.push_back({{double(i), double(j), 0.}});
+    return inserted.first->second;
+  };
+  for(const std::array<int, 2>& c : cells)
+    s.faces.push_back({point(c[0], c[1]), point(c[0] + 1, c[1]), point(c[0] + 1, c[1] + 1), point(c[0], c[1] + 1)});
+  return s;
+}
+
+// The quads of a soup as the atlas's triangle set (two triangles per quad, one polygon), and
+// a chart of all its faces whose UVs are the 3D points scaled by 2 (a one-to-one map).
+void quads_as_chart(const Soup& s, SMP::internal::Atlas_triangles& t, SMP::internal::Atlas_chart& chart)
+{
+  for(const auto& p : s.points)
+    t.points.emplace_back(p[0], p[1], p[2]);
+  for(std::size_t q = 0; q < s.faces.size(); ++q)
+    for(const std::array<std::size_t, 3>& k : {std::array<std::size_t, 3>{{0, 1, 2}}, std::array<std::size_t, 3>{{0, 2, 3}}})
+    {
+      t.faces.push_back({{int(s.faces[q][k[0]]), int(s.faces[q][k[1]]), int(s.faces[q][k[2]])}});
+      t.face_polygon.push_back(q);
+      chart.faces.push_back(t.faces.size() - 1);
+      chart.corners.emplace_back();
+      for(std::size_t c = 0; c < 3; ++c)
+        chart.corners.back()[c] = 2. * t.points[std::size_t(t.faces.back()[c])].head<2>();
+    }
+}
+
+} // namespace
+
+// A U of quads (two arms 10 long, 5 apart) cut across its longer side (its height) at the
+// middle: the bottom half (one U-shaped island) and the two tops of the arms (two islands).
+// Each face keeps its UVs exactly, each quad goes whole to one piece, the pieces partition
+// the faces and each spans half the height.
+BOOST_AUTO_TEST_CASE(a_cut_across_keeps_the_uvs)
+{
+  std::vector<std::array<int, 2> > cells;
+  for(int j = 0; j < 10; ++j)
+    cells.push_back({{0, j}}), cells.push_back({{4, j}});
+  for(int i = 1; i < 4; ++i)
+    cells.push_back({{i, 0}});
+  SMP::internal::Atlas_triangles t;
+  SMP::internal::Atlas_chart chart;
+  quads_as_chart(quads_at(cells), t, chart);
+  const std::vector<SMP::internal::Atlas_chart> pieces = SMP::internal::cut_across(t, chart);
+  BOOST_REQUIRE_EQUAL(pieces.size(), 3u);
+  std::vector<int> piece_of(t.faces.size(), -1);
+  std::vector<int> polygon_piece(cells.size(), -1);
+  for(std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    BOOST_REQUIRE_EQUAL(pieces[p].corners.size(), pieces[p].faces.size());
+    double low = HUGE_VAL, high = -HUGE_VAL;
+    for(std::size_t i = 0; i < pieces[p].faces.size(); ++i)
+    {
+      const std::size_t f = pieces[p].faces[i];
+      BOOST_CHECK_EQUAL(piece_of[f], -1);
+      piece_of[f] = int(p);
+      BOOST_CHECK(pieces[p].corners[i] == chart.corners[f]);  // face f is chart face f
+      int& polygon = polygon_piece[t.face_polygon[f]];
+      BOOST_CHECK(polygon == -1 || polygon == int(p));
+      polygon = int(p);
+      for(const Eigen::Vector2d& uv : pieces[p].corners[i])
+        low = (std::min)(low, uv.y()), high = (std::max)(high, uv.y());
+    }
+    BOOST_CHECK_CLOSE(high - low, 10., 1e-9);  // half of the height 20 (UVs: 2 x the 3D points)
+  }
+  BOOST_CHECK(std::count(piece_of.begin(), piece_of.end(), -1) == 0);
+}
+
+// A flat strip of 16 unit quads: one chart has compactness 1/16 and fills a sixteenth of the
+// square at most. Within the default bounds it is cut across (16 -> 8 -> 4 -> 2 quads: a piece
+// of 4 has compactness 0.25 < 0.3 and is longer than half the side of a square of the strip's
+// area; a piece of 2 has 0.5): 8 undistorted charts after 7 cuts, which fill the square more
+// than twice as well.
+BOOST_AUTO_TEST_CASE(a_long_strip_is_cut_into_compact_charts)
+{
+  std::vector<std::array<int, 2> > cells;
+  for(int i = 0; i < 16; ++i)
+    cells.push_back({{i, 0}});
+  const Soup s = quads_at(cells);
+  const Atlas_output one = check_soup(s, true, without_bounds());
+  BOOST_CHECK_EQUAL(one.report.charts.size(), 1u);
+  const Atlas_output a = check_soup(s);
+  BOOST_TEST_MESSAGE("strip of 16 quads: " << a.report.charts.size() << " charts, " << a.report.splits
+                     << " cuts, utilization " << a.report.utilization << " (one chart: " << one.report.utilization << ")");
+  BOOST_CHECK_EQUAL(a.report.charts.size(), 8u);
+  BOOST_CHECK_EQUAL(a.report.splits, 7u);
+  for(const SMP::Atlas_chart_report& c : a.report.charts)
+    BOOST_CHECK_CLOSE(c.compactness, 0.5, 1e-6);
+  BOOST_CHECK_LT(largest_area_distortion(s.points, s.faces, a), 1e-6);
+  BOOST_CHECK_LT(largest_angle_change(s.points, s.faces, a), 1e-6);
+  BOOST_CHECK_GT(a.report.utilization, 2. * one.report.utilization);
 }
 
 // ----------------------------------------------------------- core tier: CGAL's data meshes

@@ -193,18 +193,61 @@ struct Chart_bounds
   double short_length;
 };
 
-// Whether a chart meets the bounds.
-inline bool within_bounds(const Atlas_chart& chart, const Chart_bounds& bounds)
+// Whether a chart meets the distortion bounds (area spread and angle distortion).
+inline bool within_distortion_bounds(const Atlas_chart& chart, const Chart_bounds& bounds)
 {
-  const Atlas_options& o = bounds.options;
-  return chart.area_spread <= o.max_area_spread && chart.angle_distortion <= o.max_angle_distortion &&
-         (chart.compactness >= o.min_compactness || chart.length <= bounds.short_length);
+  return chart.area_spread <= bounds.options.max_area_spread && chart.angle_distortion <= bounds.options.max_angle_distortion;
+}
+
+// Whether a chart meets the compactness bound (or is short enough to need none).
+inline bool compact_enough(const Atlas_chart& chart, const Chart_bounds& bounds)
+{
+  return chart.compactness >= bounds.options.min_compactness || chart.length <= bounds.short_length;
+}
+
+// The figures of a one-to-one chart: areas, area spread, angle distortion, compactness.
+inline void measure_chart(const Atlas_triangles& t, Atlas_chart& chart)
+{
+  chart_area_figures(t, chart);
+  chart_angle_distortion(t, chart);
+  chart_compactness(chart);
+}
+
+// One-to-one pieces of a chart's map (cut_across(), or the UV islands of the parts of a
+// split), each kept when it meets the bounds (a single face: the distortion bounds) and cut
+// across again (cut_across(): nothing is flattened) when it misses only the compactness; a
+// piece that misses a distortion bound, or whose border misses the clearance
+// (chart_border_is_clear()), goes back to `pending` to be flattened anew. `splits` counts the
+// cuts.
+inline void settle_pieces(const Atlas_triangles& t, std::vector<Atlas_chart> pieces, const Chart_bounds& bounds,
+                          std::vector<Atlas_chart>& charts, std::vector<std::vector<std::size_t> >& pending,
+                          std::size_t& splits)
+{
+  while(!pieces.empty())
+  {
+    Atlas_chart piece = std::move(pieces.back());
+    pieces.pop_back();
+    measure_chart(t, piece);
+    if(!within_distortion_bounds(piece, bounds) || !chart_border_is_clear(t, piece))
+      pending.push_back(std::move(piece.faces));
+    else if(piece.faces.size() == 1 || compact_enough(piece, bounds))
+      charts.push_back(std::move(piece));
+    else
+    {
+      ++splits;
+      for(Atlas_chart& smaller : cut_across(t, piece))
+        pieces.push_back(std::move(smaller));
+    }
+  }
 }
 
 // The charts of a face subset: each connected part one chart when its map is one-to-one and
-// within the bounds, otherwise split in two (split_for_bound()), and so on (a stack of face
-// sets, not a recursion: a split may peel off little, and the depth is not bounded by a
-// logarithm); a single triangle always unfolds, undistorted. `splits` counts the splits.
+// within the bounds; cut across when it misses only the compactness bound (settle_pieces());
+// otherwise split in two (split_sides()), the parts of a one-to-one map kept with their UVs
+// where they meet the bounds (settle_pieces()), the others flattened again, and so on (a
+// stack of face sets, not a recursion: a split may peel off little, and the depth is not
+// bounded by a logarithm); a single triangle always unfolds, undistorted. `splits` counts the
+// splits and cuts.
 inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::size_t>& faces, const Chart_bounds& bounds,
                              std::vector<Atlas_chart>& charts, std::size_t& splits)
 {
@@ -219,18 +262,25 @@ inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::si
       const bool one_to_one = flatten_subset(t, part, bounds.options, chart) || part.size() == 1;
       if(one_to_one)
       {
-        chart_area_figures(t, chart);
-        chart_angle_distortion(t, chart);
-        chart_compactness(chart);
-        if(part.size() == 1 || within_bounds(chart, bounds))
+        measure_chart(t, chart);
+        const bool within = within_distortion_bounds(chart, bounds);
+        if(part.size() == 1 || (within && compact_enough(chart, bounds)))
         {
           charts.push_back(std::move(chart));
           continue;
         }
       }
       ++splits;
-      std::array<std::vector<std::size_t>, 2> halves =
-        split_for_bound(t, part, bounds.options.split, one_to_one ? &chart : nullptr);
+      const bool cut = one_to_one && within_distortion_bounds(chart, bounds);
+      const std::vector<int> side = cut ? std::vector<int>() : split_sides(t, part, bounds.options.split, one_to_one ? &chart : nullptr);
+      if(one_to_one)
+      {
+        settle_pieces(t, cut ? cut_across(t, chart) : uv_islands(t, chart, side), bounds, charts, pending, splits);
+        continue;
+      }
+      std::array<std::vector<std::size_t>, 2> halves;
+      for(std::size_t i = 0; i < part.size(); ++i)
+        halves[std::size_t(side[i])].push_back(part[i]);
       pending.push_back(std::move(halves[1]));
       pending.push_back(std::move(halves[0]));
     }

@@ -50,19 +50,22 @@ struct Atlas_options
   /// The bound on a chart's area spread (`Atlas_chart_report::area_spread`, default 0.2):
   /// a chart whose one-to-one map exceeds it, or misses `max_angle_distortion` or
   /// `min_compactness`, is split in two (`split`), recursively, until each part meets the
-  /// bounds (a single triangle always does). Infinity (with `max_angle_distortion` infinite and
+  /// bounds (a single triangle always does). A part of a chart whose map is one-to-one keeps
+  /// that map where its own figures meet the bounds; the other parts are flattened again. Infinity (with `max_angle_distortion` infinite and
   /// `min_compactness` 0) keeps one chart per connected component wherever a one-to-one map
   /// exists.
   double max_area_spread = 0.2;
   /// The bound on a chart's angle distortion (the paper's, `Atlas_chart_report::angle_distortion`,
   /// default 0.2).
   double max_angle_distortion = 0.2;
-  /// The bound on a chart's compactness (`Atlas_chart_report::compactness`, default 0.125):
+  /// The bound on a chart's compactness (`Atlas_chart_report::compactness`, default 0.3):
   /// a long strip or a sparse ring sets the scale of the whole atlas and fills the square
-  /// badly, so it is split too, unless it is short: its longer side at most half the side of
-  /// a square of the whole mesh's area (such a chart fits into the gaps of the packing).
-  /// Zero keeps every shape.
-  double min_compactness = 0.125;
+  /// badly, so it is cut too, unless it is short: its longer side at most half the side of
+  /// a square of the whole mesh's area (such a chart fits into the gaps of the packing). A
+  /// chart that misses only this bound is cut across the longer side of its smallest bounding
+  /// rectangle, at its middle, and its pieces keep their UVs (a part of a one-to-one map is
+  /// one-to-one, with the same distortion: nothing is flattened again). Zero keeps every shape.
+  double min_compactness = 0.3;
   /// How a chart that misses the bounds is split (default `SPLIT_BY_NORMALS`).
   Atlas_split split = SPLIT_BY_NORMALS;
   /// Texels per side of the square texture the atlas is packed for (default 1024, at least 8).

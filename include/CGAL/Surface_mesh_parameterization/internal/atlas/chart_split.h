@@ -35,6 +35,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <queue>
 #include <utility>
@@ -238,11 +239,11 @@ inline std::array<std::size_t, 2> split_seeds(Atlas_split split, const Split_gra
   return {{a, farthest(a)}};
 }
 
-// A connected face subset that misses the bound split in two; `map` is its one-to-one map
-// (SPLIT_BY_SCALE), or null when it has none (the normals are used then). Input polygons are
-// kept whole (parts_keeping_polygons()); the caller splits each part into its components.
-inline std::array<std::vector<std::size_t>, 2> split_for_bound(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
-                                                              Atlas_split split, const Atlas_chart* map)
+// The sides of the split in two of a connected face subset that misses the bound, per face
+// (0 or 1); `map` is its one-to-one map (SPLIT_BY_SCALE), or null when it has none (the
+// normals are used then). Input polygons are kept whole (parts_keeping_polygons()).
+inline std::vector<int> split_sides(const Atlas_triangles& t, const std::vector<std::size_t>& faces, Atlas_split split,
+                                    const Atlas_chart* map)
 {
   if(map == nullptr)
     split = SPLIT_BY_NORMALS;
@@ -254,11 +255,77 @@ inline std::array<std::vector<std::size_t>, 2> split_for_bound(const Atlas_trian
   std::vector<int> side(faces.size());
   for(std::size_t i = 0; i < faces.size(); ++i)
     side[i] = std::max(node_side[s.node_of[i]], 0);
-  const std::vector<int> part = parts_keeping_polygons(t, faces, side);
+  return parts_keeping_polygons(t, faces, side);
+}
+
+// The two parts of that split (split_sides()); the caller splits each into its components.
+inline std::array<std::vector<std::size_t>, 2> split_for_bound(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
+                                                              Atlas_split split, const Atlas_chart* map)
+{
+  const std::vector<int> side = split_sides(t, faces, split, map);
   std::array<std::vector<std::size_t>, 2> parts;
   for(std::size_t i = 0; i < faces.size(); ++i)
-    parts[std::size_t(part[i])].push_back(faces[i]);
+    parts[std::size_t(side[i])].push_back(faces[i]);
   return parts;
+}
+
+// The UV islands of a chart within each part (`part`: per face): faces of one part joined
+// across the edges whose two ends have the same UVs on both sides; each island a chart that
+// keeps its faces' UVs, in the order of their first faces.
+inline std::vector<Atlas_chart> uv_islands(const Atlas_triangles& t, const Atlas_chart& chart, const std::vector<int>& part)
+{
+  std::vector<std::array<std::size_t, 3> > vertices;
+  std::vector<Eigen::Vector2d> uv;
+  chart_uv_vertices(t, chart, vertices, uv);
+  Union_find islands(chart.faces.size());
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_face;
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+    for(std::size_t k = 0; k < 3; ++k)
+    {
+      const auto inserted = edge_face.emplace(std::minmax(vertices[i][k], vertices[i][(k + 1) % 3]), i);
+      if(!inserted.second && part[inserted.first->second] == part[i])
+        islands.unite(inserted.first->second, i);
+    }
+  std::vector<std::size_t> piece_of(chart.faces.size(), chart.faces.size());
+  std::vector<Atlas_chart> pieces;
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+  {
+    std::size_t& piece = piece_of[islands.find(i)];
+    if(piece == chart.faces.size())
+    {
+      piece = pieces.size();
+      pieces.emplace_back();
+      pieces.back().flattening = chart.flattening;
+    }
+    pieces[piece].faces.push_back(chart.faces[i]);
+    pieces[piece].corners.push_back(chart.corners[i]);
+  }
+  return pieces;
+}
+
+// A one-to-one chart cut across the longer side of its smallest bounding box, at the box's
+// middle (each face goes to the side of its UV centroid; input polygons are kept whole), each
+// piece one UV island (its faces joined across the edges whose two ends keep their UVs). A
+// piece keeps its faces' UVs: a part of a one-to-one map is one-to-one with the same
+// distortion, so nothing is flattened again, and a long strip becomes two of half its length.
+// Two pieces at least for a chart of two faces or more (parts_keeping_polygons()).
+inline std::vector<Atlas_chart> cut_across(const Atlas_triangles& t, const Atlas_chart& chart)
+{
+  std::vector<Eigen::Vector2d> corners;
+  corners.reserve(3 * chart.corners.size());
+  for(const std::array<Eigen::Vector2d, 3>& c : chart.corners)
+    corners.insert(corners.end(), c.begin(), c.end());
+  const Min_area_rectangle box = min_area_rectangle(corners);
+  double low = HUGE_VAL, high = -HUGE_VAL;
+  for(const Eigen::Vector2d& p : corners)
+  {
+    low = (std::min)(low, box.rotate(p).x());
+    high = (std::max)(high, box.rotate(p).x());
+  }
+  std::vector<int> side(chart.faces.size());
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+    side[i] = box.rotate(chart.corners[i][0] + chart.corners[i][1] + chart.corners[i][2]).x() > 1.5 * (low + high);
+  return uv_islands(t, chart, parts_keeping_polygons(t, chart.faces, side));
 }
 
 } // namespace internal
