@@ -29,6 +29,7 @@
 
 #include <array>
 #include <cstddef>
+#include <map>
 #include <vector>
 
 namespace CGAL {
@@ -241,6 +242,39 @@ inline void settle_pieces(const Atlas_triangles& t, std::vector<Atlas_chart> pie
   }
 }
 
+// The pieces of a split of a chart with a one-to-one map that keep it (settle_pieces()): the
+// UV islands of each side (`side`: per face of the chart) that is in as many islands as it has
+// components on the surface. A side that the chart's seams cut into more islands goes back to
+// `pending` whole: flattened again, it may stay one chart.
+inline std::vector<Atlas_chart> pieces_of_split(const Atlas_triangles& t, const Atlas_chart& chart,
+                                                const std::vector<int>& side,
+                                                std::vector<std::vector<std::size_t> >& pending)
+{
+  std::vector<Atlas_chart> islands = uv_islands(t, chart, side);
+  std::array<std::vector<std::size_t>, 2> faces;
+  std::map<std::size_t, int> side_of;
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+  {
+    faces[std::size_t(side[i])].push_back(chart.faces[i]);
+    side_of[chart.faces[i]] = side[i];
+  }
+  std::array<std::size_t, 2> count{{0, 0}};
+  for(const Atlas_chart& island : islands)
+    ++count[std::size_t(side_of[island.faces.front()])];
+  std::array<bool, 2> keep{{true, true}};
+  for(std::size_t s = 0; s < 2; ++s)
+    if(count[s] > 1 && count[s] > edge_components(t, faces[s]).size())
+    {
+      keep[s] = false;
+      pending.push_back(std::move(faces[s]));
+    }
+  std::vector<Atlas_chart> kept;
+  for(Atlas_chart& island : islands)
+    if(keep[std::size_t(side_of[island.faces.front()])])
+      kept.push_back(std::move(island));
+  return kept;
+}
+
 // The charts of a face subset: each connected part one chart when its map is one-to-one and
 // within the bounds; cut across when it misses only the compactness bound (settle_pieces());
 // otherwise split in two (split_sides()), the parts of a one-to-one map kept with their UVs
@@ -275,7 +309,8 @@ inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::si
       const std::vector<int> side = cut ? std::vector<int>() : split_sides(t, part, bounds.options.split, one_to_one ? &chart : nullptr);
       if(one_to_one)
       {
-        settle_pieces(t, cut ? cut_across(t, chart) : uv_islands(t, chart, side), bounds, charts, pending, splits);
+        settle_pieces(t, cut ? cut_across(t, chart) : pieces_of_split(t, chart, side, pending), bounds, charts, pending,
+                      splits);
         continue;
       }
       std::array<std::vector<std::size_t>, 2> halves;
