@@ -295,27 +295,22 @@ inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::si
       Atlas_chart chart;
       const bool one_to_one = flatten_subset(t, part, bounds.options, chart) || part.size() == 1;
       if(one_to_one)
-      {
         measure_chart(t, chart);
-        const bool within = within_distortion_bounds(chart, bounds);
-        if(part.size() == 1 || (within && compact_enough(chart, bounds)))
-        {
-          charts.push_back(std::move(chart));
-          continue;
-        }
-      }
-      ++splits;
-      const bool cut = one_to_one && within_distortion_bounds(chart, bounds);
-      const std::vector<int> side = cut ? std::vector<int>() : split_sides(t, part, bounds.options.split, one_to_one ? &chart : nullptr);
-      if(one_to_one)
+      const bool within = one_to_one && within_distortion_bounds(chart, bounds);
+      if(one_to_one && (part.size() == 1 || (within && compact_enough(chart, bounds))))
       {
-        settle_pieces(t, cut ? cut_across(t, chart) : pieces_of_split(t, chart, side, pending), bounds, charts, pending,
-                      splits);
+        charts.push_back(std::move(chart));
         continue;
       }
-      std::array<std::vector<std::size_t>, 2> halves;
-      for(std::size_t i = 0; i < part.size(); ++i)
-        halves[std::size_t(side[i])].push_back(part[i]);
+      ++splits;
+      if(one_to_one)
+      {
+        const Atlas_split split = bounds.options.split;
+        settle_pieces(t, within ? cut_across(t, chart) : pieces_of_split(t, chart, split_sides(t, part, split, &chart), pending),
+                      bounds, charts, pending, splits);
+        continue;
+      }
+      std::array<std::vector<std::size_t>, 2> halves = split_for_bound(t, part, bounds.options.split, nullptr);
       pending.push_back(std::move(halves[1]));
       pending.push_back(std::move(halves[0]));
     }
