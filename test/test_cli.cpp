@@ -2020,17 +2020,7 @@ BOOST_AUTO_TEST_CASE(equal_border_loops_are_chosen_by_the_library_rule)
   // border halfedge found). With --border=circle the start is the vertex at angle 0 of the
   // circle, the largest u.
   const int n = 31, rows = 5;
-  mbp_test::Soup tube;
-  for(int j = 0; j <= rows; ++j)
-    for(int i = 0; i < n; ++i)
-      tube.points.push_back({{std::cos(2. * CGAL_PI * i / n), std::sin(2. * CGAL_PI * i / n), 2. * j / rows}});
-  for(int j = 0; j < rows; ++j)
-    for(int i = 0; i < n; ++i)
-    {
-      auto id = [](int a, int b) { return std::size_t(b * n + a % n); };
-      tube.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      tube.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
+  const mbp_test::Soup tube = mbp_test::tube(n, rows, 2. / rows, false);
   const double c = std::cos(1.), s = std::sin(1.);
   const std::vector<std::pair<std::string, std::function<std::array<double, 3>(const std::array<double, 3>&)> > > transforms{
     {"identity", [](const std::array<double, 3>& p) { return p; }},

@@ -143,6 +143,32 @@ struct Soup
   std::vector<std::vector<std::size_t> > faces;
 };
 
+// A tube of radius 1 around the z axis: `rings` + 1 rings of `spokes` vertices (vertex i of
+// ring j at angle 2 pi i / spokes, height step j), two triangles per quad, turning
+// counterclockwise seen from outside; open at both ends, or with `capped` closed above the
+// last ring by a fan to one apex a step higher (the last vertex).
+inline Soup tube(int spokes, int rings, double step, bool capped)
+{
+  Soup s;
+  for(int j = 0; j <= rings; ++j)
+    for(int i = 0; i < spokes; ++i)
+      s.points.push_back({{std::cos(2. * CGAL_PI * i / spokes), std::sin(2. * CGAL_PI * i / spokes), step * j}});
+  auto id = [spokes](int i, int j) { return std::size_t(j * spokes + (i % spokes)); };
+  for(int j = 0; j < rings; ++j)
+    for(int i = 0; i < spokes; ++i)
+    {
+      s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  if(capped)
+  {
+    s.points.push_back({{0., 0., step * (rings + 1)}});
+    for(int i = 0; i < spokes; ++i)
+      s.faces.push_back({id(i, rings), id(i + 1, rings), s.points.size() - 1});
+  }
+  return s;
+}
+
 // A polar grid of the disk of radius 1: the center (vertex 0), `rings` rings of `spokes`
 // vertices at radius k/rings, and one extra vertex in the middle of every quad between two
 // rings, which is split into four triangles. With `spokes` divisible by 4 the mesh is

@@ -331,40 +331,15 @@ MBP_TIERED_TEST_CASE(real_folds_of_the_poisson_border_are_repaired_or_rejected)
     }
 }
 
-namespace {
-
-// A tube of radius 1 closed at one end by a fan, open at z = 0 (its border), `rings` rings of
-// `spokes` vertices one edge length apart: a disk whose conformal map shrinks the ring at depth
-// z by about exp(-z).
-mbp_test::Soup capped_tube(int spokes, int rings)
-{
-  mbp_test::Soup s;
-  const double step = 2. * CGAL_PI / spokes;
-  for(int j = 0; j <= rings; ++j)
-    for(int i = 0; i < spokes; ++i)
-      s.points.push_back({{std::cos(step * i), std::sin(step * i), step * j}});
-  s.points.push_back({{0., 0., step * (rings + 1)}});
-  auto id = [spokes](int i, int j) { return std::size_t(j * spokes + (i % spokes)); };
-  for(int j = 0; j < rings; ++j)
-    for(int i = 0; i < spokes; ++i)
-    {
-      s.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      s.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  for(int i = 0; i < spokes; ++i)
-    s.faces.push_back({id(i, rings), id(i + 1, rings), s.points.size() - 1});
-  return s;
-}
-
-} // namespace
-
 BOOST_AUTO_TEST_CASE(rounding_that_defeats_the_circle_ends_the_repair)
 {
   // 45 units deep: the conformal factor of the far rings (about exp(-45) = 3e-20) is below the
   // precision of a UV near 0.5, so every map of this disk into the unit square collapses
   // them, the circle's mean value map too (Floater's theorem needs exact arithmetic).
   const int spokes = 16, rings = int(std::ceil(45. / (2. * CGAL_PI / spokes)));
-  Mesh m = mbp_test::make_mesh<Mesh>(capped_tube(spokes, rings));
+  // A tube closed at one end, open at z = 0 (its border), its rings one edge length apart: a
+  // disk whose conformal map shrinks the ring at depth z by about exp(-z).
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::tube(spokes, rings, 2. * CGAL_PI / spokes, true));
   const halfedge_descriptor bhd = mbp_test::longest_border(m);
   BOOST_REQUIRE_EQUAL(CGAL::halfedges_around_face(bhd, m).size(), std::size_t(spokes));
   UV_map uv = mbp_test::new_uv_map(m, "v:uv");
