@@ -51,9 +51,9 @@ struct Atlas_options
   /// a chart whose one-to-one map exceeds it, or misses `max_angle_distortion` or
   /// `min_compactness`, is split in two (`split`), recursively, until each part meets the
   /// bounds (a single triangle always does). A part of a chart whose map is one-to-one keeps
-  /// that map where its own figures meet the bounds; the other parts are flattened again. Infinity (with `max_angle_distortion` infinite and
-  /// `min_compactness` 0) keeps one chart per connected component wherever a one-to-one map
-  /// exists.
+  /// that map where its own figures meet the bounds; the other parts are flattened again.
+  /// Infinity (with `max_angle_distortion` infinite and `min_compactness` 0) keeps one chart
+  /// per connected component wherever a one-to-one map exists.
   double max_area_spread = 0.2;
   /// The bound on a chart's angle distortion (the paper's, `Atlas_chart_report::angle_distortion`,
   /// default 0.2).
