@@ -586,16 +586,23 @@ Soup quads_at(const std::vector<std::array<int, 2> >& cells)
   return s;
 }
 
-// The quads of a soup as the atlas's triangle set (two triangles per quad, one polygon), and
-// a chart of all its faces whose UVs are the 3D points scaled by 2 (a one-to-one map).
+// The quads of a soup as the atlas's triangle set (equal points merged, two triangles per
+// quad, one polygon), and a chart of all its faces whose UVs are the 3D points scaled by 2 (a
+// one-to-one map in the plane z = 0).
 void quads_as_chart(const Soup& s, SMP::internal::Atlas_triangles& t, SMP::internal::Atlas_chart& chart)
 {
+  std::map<std::array<double, 3>, int> id;
+  std::vector<int> point_id;
   for(const auto& p : s.points)
-    t.points.emplace_back(p[0], p[1], p[2]);
+  {
+    point_id.push_back(id.emplace(p, int(t.points.size())).first->second);
+    if(point_id.back() == int(t.points.size()))
+      t.points.emplace_back(p[0], p[1], p[2]);
+  }
   for(std::size_t q = 0; q < s.faces.size(); ++q)
     for(const std::array<std::size_t, 3>& k : {std::array<std::size_t, 3>{{0, 1, 2}}, std::array<std::size_t, 3>{{0, 2, 3}}})
     {
-      t.faces.push_back({{int(s.faces[q][k[0]]), int(s.faces[q][k[1]]), int(s.faces[q][k[2]])}});
+      t.faces.push_back({{point_id[s.faces[q][k[0]]], point_id[s.faces[q][k[1]]], point_id[s.faces[q][k[2]]]}});
       t.face_polygon.push_back(q);
       chart.faces.push_back(t.faces.size() - 1);
       chart.corners.emplace_back();
@@ -620,6 +627,8 @@ BOOST_AUTO_TEST_CASE(a_cut_across_keeps_the_uvs)
   SMP::internal::Atlas_triangles t;
   SMP::internal::Atlas_chart chart;
   quads_as_chart(quads_at(cells), t, chart);
+  SMP::internal::chart_area_figures(t, chart);
+  SMP::internal::chart_compactness(chart);  // the smallest box, which the cut goes across
   const std::vector<SMP::internal::Atlas_chart> pieces = SMP::internal::cut_across(t, chart);
   BOOST_REQUIRE_EQUAL(pieces.size(), 3u);
   std::vector<int> piece_of(t.faces.size(), -1);
@@ -643,6 +652,68 @@ BOOST_AUTO_TEST_CASE(a_cut_across_keeps_the_uvs)
     BOOST_CHECK_CLOSE(high - low, 10., 1e-9);  // half of the height 20 (UVs: 2 x the 3D points)
   }
   BOOST_CHECK(std::count(piece_of.begin(), piece_of.end(), -1) == 0);
+}
+
+// The number of parts of a split of a chart cut open by seams: 1 + ceil(log2 r) for a map r
+// times over the larger of its two bounds' ratios, 2 to 8; a disk's: 2.
+BOOST_AUTO_TEST_CASE(a_chart_far_over_the_bounds_is_split_into_more_parts)
+{
+  SMP::Atlas_options options;
+  options.max_area_spread = 0.2;
+  options.max_angle_distortion = 0.1;
+  const SMP::internal::Chart_bounds bounds{options, 0.};
+  SMP::internal::Atlas_chart chart;
+  chart.area_spread = 20.;
+  chart.flattening = SMP::DISK_CHART;
+  BOOST_CHECK_EQUAL(SMP::internal::split_count(chart, bounds), 2u);
+  chart.flattening = SMP::SEAMED_CHART;
+  for(const std::array<double, 3>& c : {std::array<double, 3>{{0.3, 0., 2.}}, std::array<double, 3>{{0.8, 0.05, 3.}},
+                                        std::array<double, 3>{{0.81, 0.05, 4.}}, std::array<double, 3>{{0.1, 0.35, 3.}},
+                                        std::array<double, 3>{{0.1, 0.41, 4.}}, std::array<double, 3>{{20., 0., 8.}},
+                                        std::array<double, 3>{{1e300, 0., 8.}}})
+  {
+    chart.area_spread = c[0];
+    chart.angle_distortion = c[1];
+    BOOST_CHECK_EQUAL(SMP::internal::split_count(chart, bounds), std::size_t(c[2]));
+  }
+}
+
+// A cube split into 2, 3 and 6 parts by normals (split_sides()): exactly that many parts, each
+// connected, each side of the cube (a flat patch) and each quad whole in one part; in 6 parts,
+// one side each.
+BOOST_AUTO_TEST_CASE(a_split_into_parts_keeps_flat_sides_whole)
+{
+  SMP::internal::Atlas_triangles t;
+  SMP::internal::Atlas_chart chart;
+  quads_as_chart(mbp_test::cube_of_quads(4), t, chart);
+  auto side_of = [&](std::size_t f) {  // the cube's side of a face: its normal's axis and sign
+    const Eigen::Vector3d& a = t.points[std::size_t(t.faces[f][0])];
+    const Eigen::Vector3d n = (t.points[std::size_t(t.faces[f][1])] - a).cross(t.points[std::size_t(t.faces[f][2])] - a);
+    Eigen::Index axis;
+    n.cwiseAbs().maxCoeff(&axis);
+    return int(2 * axis) + (n[axis] > 0. ? 1 : 0);
+  };
+  for(std::size_t count : {2u, 3u, 6u})
+    BOOST_TEST_CONTEXT(count << " parts")
+    {
+      const std::vector<int> part = SMP::internal::split_sides(t, chart.faces, SMP::SPLIT_BY_NORMALS, nullptr, count);
+      std::vector<std::vector<std::size_t> > faces(count);
+      std::map<int, int> part_of_side;
+      std::map<std::size_t, int> part_of_quad;
+      for(std::size_t i = 0; i < part.size(); ++i)
+      {
+        BOOST_REQUIRE(part[i] >= 0 && std::size_t(part[i]) < count);
+        faces[std::size_t(part[i])].push_back(chart.faces[i]);
+        BOOST_CHECK_EQUAL(part_of_side.emplace(side_of(chart.faces[i]), part[i]).first->second, part[i]);
+        BOOST_CHECK_EQUAL(part_of_quad.emplace(t.face_polygon[chart.faces[i]], part[i]).first->second, part[i]);
+      }
+      BOOST_CHECK_EQUAL(part_of_side.size(), 6u);
+      for(const std::vector<std::size_t>& f : faces)
+        BOOST_CHECK_EQUAL(SMP::internal::edge_components(t, f).size(), 1u);  // not empty, connected
+      if(count == 6)
+        for(const std::vector<std::size_t>& f : faces)
+          BOOST_CHECK_EQUAL(f.size(), t.faces.size() / 6);
+    }
 }
 
 // A flat strip of 16 unit quads: one chart has compactness 1/16 and fills a sixteenth of the

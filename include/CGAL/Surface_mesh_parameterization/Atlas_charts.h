@@ -29,7 +29,7 @@
 
 #include <array>
 #include <cstddef>
-#include <map>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -242,46 +242,60 @@ inline void settle_pieces(const Atlas_triangles& t, std::vector<Atlas_chart> pie
   }
 }
 
-// The pieces of a split of a chart with a one-to-one map that keep it (settle_pieces()): the
-// UV islands of each side (`side`: per face of the chart) that is in as many islands as it has
-// components on the surface. A side that the chart's seams cut into more islands goes back to
+// The number of parts of a split of a chart cut open by seams (a closed or higher-genus part:
+// SEAMED_CHART) whose one-to-one map misses the distortion bounds by the factor `over` (the
+// larger of its area spread and its angle distortion over their bounds): 1 + ceil(log2(over)),
+// from 2 to 8, so that a chart far from the bounds is not halved and flattened again level
+// after level. A disk is split in two: split into more, a part may surround another and be
+// flattened with seams, with more angle distortion (lion-head.off against Boundary First
+// Flattening). Chosen by measurement (benchmark/README.md, *Bounds*).
+inline std::size_t split_count(const Atlas_chart& chart, const Chart_bounds& bounds)
+{
+  if(chart.flattening != SEAMED_CHART)
+    return 2u;
+  const double over = (std::max)(chart.area_spread / bounds.options.max_area_spread,
+                                 chart.angle_distortion / bounds.options.max_angle_distortion);
+  const double parts = 1. + std::ceil(std::log2(over));
+  return (parts >= 8.) ? 8u : (parts > 2.) ? std::size_t(parts) : 2u;  // NaN (0 / 0): 2
+}
+
+// The pieces of the split of a chart with a one-to-one map (split_sides(), into
+// split_count() parts) that keep the map (settle_pieces()): the UV islands of each part that
+// is in as many islands as it has components on the surface. A part that the chart's seams cut into more islands goes back to
 // `pending` whole: flattened again, it may stay one chart.
 inline std::vector<Atlas_chart> pieces_of_split(const Atlas_triangles& t, const Atlas_chart& chart,
-                                                const std::vector<int>& side,
-                                                std::vector<std::vector<std::size_t> >& pending)
+                                                std::vector<std::vector<std::size_t> >& pending, const Chart_bounds& bounds)
 {
-  std::vector<Atlas_chart> islands = uv_islands(t, chart, side);
-  std::array<std::vector<std::size_t>, 2> faces;
-  std::map<std::size_t, int> side_of;
+  const std::vector<int> side = split_sides(t, chart.faces, bounds.options.split, &chart, split_count(chart, bounds));
+  std::vector<int> island_part;
+  std::vector<Atlas_chart> islands = uv_islands(t, chart, side, &island_part);
+  std::vector<std::vector<std::size_t> > faces(std::size_t(*std::max_element(side.begin(), side.end())) + 1);
   for(std::size_t i = 0; i < chart.faces.size(); ++i)
-  {
     faces[std::size_t(side[i])].push_back(chart.faces[i]);
-    side_of[chart.faces[i]] = side[i];
-  }
-  std::array<std::size_t, 2> count{{0, 0}};
-  for(const Atlas_chart& island : islands)
-    ++count[std::size_t(side_of[island.faces.front()])];
-  std::array<bool, 2> keep{{true, true}};
-  for(std::size_t s = 0; s < 2; ++s)
-    if(count[s] > 1 && count[s] > edge_components(t, faces[s]).size())
+  std::vector<std::size_t> count(faces.size(), 0);
+  for(int p : island_part)
+    ++count[std::size_t(p)];
+  std::vector<bool> keep(faces.size(), true);
+  for(std::size_t p = 0; p < faces.size(); ++p)
+    if(count[p] > 1 && count[p] > edge_components(t, faces[p]).size())
     {
-      keep[s] = false;
-      pending.push_back(std::move(faces[s]));
+      keep[p] = false;
+      pending.push_back(std::move(faces[p]));
     }
   std::vector<Atlas_chart> kept;
-  for(Atlas_chart& island : islands)
-    if(keep[std::size_t(side_of[island.faces.front()])])
-      kept.push_back(std::move(island));
+  for(std::size_t i = 0; i < islands.size(); ++i)
+    if(keep[std::size_t(island_part[i])])
+      kept.push_back(std::move(islands[i]));
   return kept;
 }
 
 // The charts of a face subset: each connected part one chart when its map is one-to-one and
 // within the bounds; cut across when it misses only the compactness bound (settle_pieces());
-// otherwise split in two (split_sides()), the parts of a one-to-one map kept with their UVs
-// where they meet the bounds (settle_pieces()), the others flattened again, and so on (a
-// stack of face sets, not a recursion: a split may peel off little, and the depth is not
-// bounded by a logarithm); a single triangle always unfolds, undistorted. `splits` counts the
-// splits and cuts.
+// otherwise split (split_sides(): into split_count() parts when it has a one-to-one map, in two
+// when not), the parts of a one-to-one map kept with their UVs where they meet the bounds
+// (settle_pieces()), the others flattened again, and so on (a stack of face sets, not a
+// recursion: a split may peel off little, and the depth is not bounded by a logarithm); a
+// single triangle always unfolds, undistorted. `splits` counts the splits and cuts.
 inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::size_t>& faces, const Chart_bounds& bounds,
                              std::vector<Atlas_chart>& charts, std::size_t& splits)
 {
@@ -305,8 +319,7 @@ inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::si
       ++splits;
       if(one_to_one)
       {
-        const Atlas_split split = bounds.options.split;
-        settle_pieces(t, within ? cut_across(t, chart) : pieces_of_split(t, chart, split_sides(t, part, split, &chart), pending),
+        settle_pieces(t, within ? cut_across(t, chart) : pieces_of_split(t, chart, pending, bounds),
                       bounds, charts, pending, splits);
         continue;
       }

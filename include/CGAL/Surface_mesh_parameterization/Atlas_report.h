@@ -22,10 +22,13 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
-/// How a chart that misses the distortion bound is split in two (`Atlas_options::split`):
-/// each face goes to the nearer of two seed faces, in a distance where a step between adjacent
-/// faces costs the change of a feature plus the distance of their centroids over the square
-/// root of the chart's area. When the chart has sharp edges (dihedral angle of 30 degrees or
+/// How a chart that misses the distortion bound is split (`Atlas_options::split`): each face
+/// goes to the nearest of the seed faces, in a distance where a step between adjacent faces
+/// costs the change of a feature plus the distance of their centroids over the square root of
+/// the chart's area. A chart cut open by seams (`SEAMED_CHART`) whose one-to-one map is
+/// \f$ r \f$ times over a bound (the larger of its area spread and its angle distortion over
+/// their bounds) is split into \f$ 1 + \lceil \log_2 r \rceil \f$ parts, 2 to 8, any other
+/// in two; the seeds past the first two are the faces farthest from the seeds so far. When the chart has sharp edges (dihedral angle of 30 degrees or
 /// more), faces joined across smooth edges move together, so that a flat or smooth face of a
 /// CAD part is never cut.
 enum Atlas_split
@@ -49,7 +52,7 @@ struct Atlas_options
 {
   /// The bound on a chart's area spread (`Atlas_chart_report::area_spread`, default 0.2):
   /// a chart whose one-to-one map exceeds it, or misses `max_angle_distortion` or
-  /// `min_compactness`, is split in two (`split`), recursively, until each part meets the
+  /// `min_compactness`, is split into parts (`split`), recursively, until each part meets the
   /// bounds (a single triangle always does). A part of a chart whose map is one-to-one keeps
   /// that map where its own figures meet the bounds; the other parts are flattened again.
   /// Infinity (with `max_angle_distortion` infinite and `min_compactness` 0) keeps one chart
@@ -120,7 +123,7 @@ struct Atlas_report
   double max_area_spread = 0.;       ///< the charts' bound on area spread (`Atlas_options`)
   double max_angle_distortion = 0.;  ///< the charts' bound on angle distortion (`Atlas_options`)
   double min_compactness = 0.;       ///< the charts' bound on compactness (`Atlas_options`)
-  /// charts split in two because they missed a bound (each split adds at least one chart)
+  /// charts split or cut because they missed a bound (each adds at least one chart)
   std::size_t splits = 0;
   /// the area of all charts in the atlas over the area of the unit square
   double utilization = 0.;

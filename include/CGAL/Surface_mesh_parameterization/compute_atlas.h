@@ -221,7 +221,7 @@ inline std::size_t input_polygon_chart(const Atlas_input& input, const Atlas_lay
 /// 2. each connected component becomes one chart when its map is one-to-one (a disk
 ///    flattened by `Conformal_parameterizer_3` with the automatic border, any other surface
 ///    cut by `compute_disk_seams()` first) and within the distortion bounds
-///    (`Atlas_options::max_area_spread`, `max_angle_distortion`), and is split in two
+///    (`Atlas_options::max_area_spread`, `max_angle_distortion`), and is split into parts
 ///    (`Atlas_split`), recursively, where it is not; a face set that no parameterizer maps
 ///    one-to-one is unfolded isometrically (`Chart_flattening`);
 /// 3. the charts are scaled to one texel density (UV area proportional to 3D area), turned

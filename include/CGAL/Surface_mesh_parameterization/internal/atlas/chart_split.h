@@ -11,7 +11,8 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_INTERNAL_ATLAS_CHART_SPLIT_H
 
 // The split of a chart that misses the distortion bound (Atlas_options): each face goes to the
-// nearer of two seeds (a weighted Voronoi split, by Dijkstra's algorithm over the faces). A
+// nearest of two or more seeds (a weighted Voronoi split, by Dijkstra's algorithm over the
+// faces; seeds past the first two are the faces farthest from the seeds so far). A
 // step between two adjacent faces costs the change of a feature plus the distance of their
 // centroids over the square root of the chart's area: the angle between their normals
 // (Atlas_split SPLIT_BY_NORMALS: the seeds are the two faces farthest apart in this distance,
@@ -217,10 +218,17 @@ inline std::vector<double> seed_distances(Atlas_split split, const Split_graph& 
   return distance;
 }
 
-// The seeds: the two farthest apart nodes (normals: from any node the farthest, then the
-// farthest from it), or the nodes of the smallest and the largest scale.
-inline std::array<std::size_t, 2> split_seeds(Atlas_split split, const Split_graph& s)
+// The seeds of a split into `count` parts: the two farthest apart nodes (normals: from any
+// node the farthest, then the farthest from it), or the nodes of the smallest and the largest
+// scale; then, while fewer than `count`, the node farthest from the seeds so far.
+inline std::vector<std::size_t> split_seeds(Atlas_split split, const Split_graph& s, std::size_t count)
 {
+  std::vector<int> nearest;
+  auto farthest = [&](const std::vector<std::size_t>& from, Atlas_split metric) {
+    const std::vector<double> d = seed_distances(metric, s, from, nearest);
+    return std::size_t(std::max_element(d.begin(), d.end()) - d.begin());
+  };
+  std::vector<std::size_t> seeds;
   if(split == SPLIT_BY_SCALE)
   {
     auto by_scale = [&s](std::size_t a, std::size_t b) { return s.feature[a].x() < s.feature[b].x(); };
@@ -228,30 +236,32 @@ inline std::array<std::size_t, 2> split_seeds(Atlas_split split, const Split_gra
     std::iota(order.begin(), order.end(), std::size_t(0));
     const auto extremes = std::minmax_element(order.begin(), order.end(), by_scale);
     if(*extremes.first != *extremes.second)
-      return {{*extremes.first, *extremes.second}};
+      seeds = {*extremes.first, *extremes.second};
   }
-  std::vector<int> nearest;
-  auto farthest = [&](std::size_t from) {
-    const std::vector<double> d = seed_distances(SPLIT_BY_NORMALS, s, {from}, nearest);
-    return std::size_t(std::max_element(d.begin(), d.end()) - d.begin());
-  };
-  const std::size_t a = farthest(0);
-  return {{a, farthest(a)}};
+  if(seeds.empty())
+  {
+    split = SPLIT_BY_NORMALS;
+    seeds.push_back(farthest({0}, split));
+    seeds.push_back(farthest({seeds[0]}, split));
+  }
+  while(seeds.size() < (std::min)(count, s.nodes))
+    seeds.push_back(farthest(seeds, split));
+  return seeds;
 }
 
-// The sides of the split in two of a connected face subset that misses the bound, per face
-// (0 or 1); `map` is its one-to-one map (SPLIT_BY_SCALE), or null when it has none (the
-// normals are used then). Input polygons are kept whole (parts_keeping_polygons()).
+// The parts (0 to count - 1, per face) of the split of a connected face subset that misses
+// the bound, each face with its nearest seed (split_seeds()); `map` is its one-to-one map
+// (SPLIT_BY_SCALE), or null when it has none (the normals are used then). Input polygons are
+// kept whole (parts_keeping_polygons()).
 inline std::vector<int> split_sides(const Atlas_triangles& t, const std::vector<std::size_t>& faces, Atlas_split split,
-                                    const Atlas_chart* map)
+                                    const Atlas_chart* map, std::size_t count = 2)
 {
   if(map == nullptr)
     split = SPLIT_BY_NORMALS;
   const Split_faces d = split_faces(t, faces, split == SPLIT_BY_SCALE ? map : nullptr);
   const Split_graph s = split_graph(subset_neighbors(t, faces), d);
-  const std::array<std::size_t, 2> seed = split_seeds(split, s);
   std::vector<int> node_side;
-  seed_distances(split, s, {seed[0], seed[1]}, node_side);
+  seed_distances(split, s, split_seeds(split, s, count), node_side);
   std::vector<int> side(faces.size());
   for(std::size_t i = 0; i < faces.size(); ++i)
     side[i] = std::max(node_side[s.node_of[i]], 0);
@@ -271,8 +281,10 @@ inline std::array<std::vector<std::size_t>, 2> split_for_bound(const Atlas_trian
 
 // The UV islands of a chart within each part (`part`: per face): faces of one part joined
 // across the edges whose two ends have the same UVs on both sides; each island a chart that
-// keeps its faces' UVs, in the order of their first faces.
-inline std::vector<Atlas_chart> uv_islands(const Atlas_triangles& t, const Atlas_chart& chart, const std::vector<int>& part)
+// keeps its faces' UVs, in the order of their first faces; `island_part`, when given, gets the
+// part of each island.
+inline std::vector<Atlas_chart> uv_islands(const Atlas_triangles& t, const Atlas_chart& chart, const std::vector<int>& part,
+                                           std::vector<int>* island_part = nullptr)
 {
   std::vector<std::array<std::size_t, 3> > vertices;
   std::vector<Eigen::Vector2d> uv;
@@ -296,6 +308,8 @@ inline std::vector<Atlas_chart> uv_islands(const Atlas_triangles& t, const Atlas
       piece = pieces.size();
       pieces.emplace_back();
       pieces.back().flattening = chart.flattening;
+      if(island_part != nullptr)
+        island_part->push_back(part[i]);
     }
     pieces[piece].faces.push_back(chart.faces[i]);
     pieces[piece].corners.push_back(chart.corners[i]);
@@ -303,28 +317,25 @@ inline std::vector<Atlas_chart> uv_islands(const Atlas_triangles& t, const Atlas
   return pieces;
 }
 
-// A one-to-one chart cut across the longer side of its smallest bounding box, at the box's
-// middle (each face goes to the side of its UV centroid; input polygons are kept whole), each
-// piece one UV island (its faces joined across the edges whose two ends keep their UVs). A
-// piece keeps its faces' UVs: a part of a one-to-one map is one-to-one with the same
-// distortion, so nothing is flattened again, and a long strip becomes two of half its length.
-// Two pieces at least for a chart of two faces or more (parts_keeping_polygons()).
+// A one-to-one chart cut across the longer side of its smallest bounding box (`chart.box`,
+// chart_compactness()), at the box's middle (each face goes to the side of its UV centroid;
+// input polygons are kept whole), each piece one UV island (its faces joined across the edges
+// whose two ends keep their UVs). A piece keeps its faces' UVs: a part of a one-to-one map is
+// one-to-one with the same distortion, so nothing is flattened again, and a long strip becomes
+// two of half its length. Two pieces at least for a chart of two faces or more
+// (parts_keeping_polygons()).
 inline std::vector<Atlas_chart> cut_across(const Atlas_triangles& t, const Atlas_chart& chart)
 {
-  std::vector<Eigen::Vector2d> corners;
-  corners.reserve(3 * chart.corners.size());
-  for(const std::array<Eigen::Vector2d, 3>& c : chart.corners)
-    corners.insert(corners.end(), c.begin(), c.end());
-  const Min_area_rectangle box = min_area_rectangle(corners);
   double low = HUGE_VAL, high = -HUGE_VAL;
-  for(const Eigen::Vector2d& p : corners)
-  {
-    low = (std::min)(low, box.rotate(p).x());
-    high = (std::max)(high, box.rotate(p).x());
-  }
+  for(const std::array<Eigen::Vector2d, 3>& c : chart.corners)
+    for(const Eigen::Vector2d& p : c)
+    {
+      low = (std::min)(low, chart.box.rotate(p).x());
+      high = (std::max)(high, chart.box.rotate(p).x());
+    }
   std::vector<int> side(chart.faces.size());
   for(std::size_t i = 0; i < chart.faces.size(); ++i)
-    side[i] = box.rotate(chart.corners[i][0] + chart.corners[i][1] + chart.corners[i][2]).x() > 1.5 * (low + high);
+    side[i] = chart.box.rotate(chart.corners[i][0] + chart.corners[i][1] + chart.corners[i][2]).x() > 1.5 * (low + high);
   return uv_islands(t, chart, parts_keeping_polygons(t, chart.faces, side));
 }
 

@@ -12,7 +12,7 @@
 
 // The charts of an atlas on an indexed triangle set (the repaired mesh): a chart is a set of
 // faces with a UV for each face corner. What is decided here needs no parameterizer: the
-// face sets (components, and their split in two when a chart is not one-to-one), the
+// face sets (components, and their split into parts when a chart is not one-to-one), the
 // isometric unfolding of a small chart along a spanning tree of its faces, the validity of a
 // chart (no flipped triangle, no two overlapping triangles) and its distortion figures.
 
@@ -69,6 +69,7 @@ struct Atlas_chart
   double compactness = 0.;       // UV area over the square of its smallest box's longer side
   double length = 0.;            // that side at the 3D scale (UV area scaled to the 3D area)
   double area_3d = 0., area_uv = 0.;
+  Min_area_rectangle box;        // its smallest bounding rectangle (chart_compactness())
 };
 
 // The faces of `faces` (a subset of the triangle set) with the faces of the subset across each
@@ -157,22 +158,22 @@ inline std::vector<std::array<int, 3> > fan_vertex_ids(const Atlas_triangles& t,
 }
 
 // The part of each face of a subset: the part `side` gives to the first face of its input
-// polygon, so that no input polygon is split; when that leaves a part empty, the polygon of the
-// last face goes to it (or the last face alone, when the subset is one polygon).
+// polygon, so that no input polygon is split; when that leaves every face in one part, the
+// polygon of the last face goes to another (or the last face alone, when the subset is one
+// polygon).
 inline std::vector<int> parts_keeping_polygons(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
                                                const std::vector<int>& side)
 {
   std::map<std::size_t, int> polygon_part;
   std::vector<int> part(faces.size());
-  int count = 0;
   for(std::size_t i = 0; i < faces.size(); ++i)
-    count += part[i] = polygon_part.emplace(t.polygon(faces[i]), side[i]).first->second;
-  if((count == 0 || count == int(faces.size())) && faces.size() > 1)
+    part[i] = polygon_part.emplace(t.polygon(faces[i]), side[i]).first->second;
+  if(faces.size() > 1 && std::all_of(part.begin(), part.end(), [&](int p) { return p == part[0]; }))
   {
     const bool one_polygon = polygon_part.size() == 1;
     for(std::size_t i = 0; i < faces.size(); ++i)
       if(one_polygon ? i + 1 == faces.size() : same_polygon(t, faces[i], faces.back()))
-        part[i] = 1 - part[i];
+        part[i] = part[i] == 0 ? 1 : 0;
   }
   return part;
 }
@@ -400,7 +401,8 @@ inline void chart_compactness(Atlas_chart& chart)
   corners.reserve(3 * chart.corners.size());
   for(const std::array<Eigen::Vector2d, 3>& c : chart.corners)
     corners.insert(corners.end(), c.begin(), c.end());
-  const double side = min_area_rectangle(corners).width;
+  chart.box = min_area_rectangle(corners);
+  const double side = chart.box.width;
   chart.compactness = (side > 0.) ? (std::min)(chart.area_uv / (side * side), 1.) : 0.;
   chart.length = (chart.area_uv > 0.) ? side * std::sqrt(chart.area_3d / chart.area_uv) : 0.;
 }
