@@ -27,9 +27,10 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <array>
-#include <cstddef>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace CGAL {
@@ -261,8 +262,8 @@ inline std::size_t split_count(const Atlas_chart& chart, const Chart_bounds& bou
 
 // The pieces of the split of a chart with a one-to-one map (split_sides(), into
 // split_count() parts) that keep the map (settle_pieces()): the UV islands of each part that
-// is in as many islands as it has components on the surface. A part that the chart's seams cut into more islands goes back to
-// `pending` whole: flattened again, it may stay one chart.
+// is in as many islands as it has components on the surface. A part that the chart's seams
+// cut into more islands goes back to `pending` whole: flattened again, it may stay one chart.
 inline std::vector<Atlas_chart> pieces_of_split(const Atlas_triangles& t, const Atlas_chart& chart,
                                                 std::vector<std::vector<std::size_t> >& pending, const Chart_bounds& bounds)
 {
