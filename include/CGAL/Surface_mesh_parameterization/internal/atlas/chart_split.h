@@ -36,7 +36,6 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
-#include <map>
 #include <numeric>
 #include <queue>
 #include <utility>
@@ -181,25 +180,17 @@ inline double step_cost(Atlas_split split, const Split_graph& s, std::size_t a, 
   return change + (s.centroid[a] - s.centroid[b]).norm() / s.length;
 }
 
-// Dijkstra's algorithm from `seeds`: the distance of each node to the nearest seed, and which
-// seed that is (`nearest`).
-inline std::vector<double> seed_distances(Atlas_split split, const Split_graph& s, const std::vector<std::size_t>& seeds,
-                                          std::vector<int>& nearest)
+typedef std::pair<double, std::size_t> Split_step;
+typedef std::priority_queue<Split_step, std::vector<Split_step>, std::greater<Split_step> > Split_queue;
+
+// Dijkstra's algorithm from the nodes in `queue`: lowers `distance` (to the nearest seed) and
+// `nearest` (that seed) wherever a path from them is shorter.
+inline void relax_seed_distances(Atlas_split split, const Split_graph& s, Split_queue& queue,
+                                 std::vector<double>& distance, std::vector<int>& nearest)
 {
-  typedef std::pair<double, std::size_t> Step;
-  std::priority_queue<Step, std::vector<Step>, std::greater<Step> > queue;
-  std::vector<double> distance(s.nodes, std::numeric_limits<double>::infinity());
-  nearest.assign(s.nodes, -1);
-  for(std::size_t i = 0; i < seeds.size(); ++i)
-    if(nearest[seeds[i]] < 0)
-    {
-      distance[seeds[i]] = 0.;
-      nearest[seeds[i]] = int(i);
-      queue.emplace(0., seeds[i]);
-    }
   while(!queue.empty())
   {
-    const Step step = queue.top();
+    const Split_step step = queue.top();
     queue.pop();
     if(step.first > distance[step.second])
       continue;
@@ -215,19 +206,42 @@ inline std::vector<double> seed_distances(Atlas_split split, const Split_graph& 
       }
     }
   }
+}
+
+// Adds the seed `seed` (the index-th) to the distances to the nearest seed: only the nodes it
+// brings nearer are visited.
+inline void add_seed(Atlas_split split, const Split_graph& s, std::size_t seed, int index,
+                     std::vector<double>& distance, std::vector<int>& nearest)
+{
+  if(nearest[seed] >= 0 && !(distance[seed] > 0.))
+    return;  // a seed already
+  Split_queue queue;
+  distance[seed] = 0.;
+  nearest[seed] = index;
+  queue.emplace(0., seed);
+  relax_seed_distances(split, s, queue, distance, nearest);
+}
+
+// Dijkstra's algorithm from `seeds`: the distance of each node to the nearest seed, and which
+// seed that is (`nearest`).
+inline std::vector<double> seed_distances(Atlas_split split, const Split_graph& s, const std::vector<std::size_t>& seeds,
+                                          std::vector<int>& nearest)
+{
+  std::vector<double> distance(s.nodes, std::numeric_limits<double>::infinity());
+  nearest.assign(s.nodes, -1);
+  for(std::size_t i = 0; i < seeds.size(); ++i)
+    add_seed(split, s, seeds[i], int(i), distance, nearest);
   return distance;
 }
 
 // The seeds of a split into `count` parts: the two farthest apart nodes (normals: from any
 // node the farthest, then the farthest from it), or the nodes of the smallest and the largest
-// scale; then, while fewer than `count`, the node farthest from the seeds so far.
-inline std::vector<std::size_t> split_seeds(Atlas_split split, const Split_graph& s, std::size_t count)
+// scale; then, while fewer than `count`, the node farthest from the seeds so far (each added
+// with add_seed(): it visits only the nodes it takes). `nearest` gets each node's seed.
+inline std::vector<std::size_t> split_seeds(Atlas_split split, const Split_graph& s, std::size_t count,
+                                            std::vector<int>& nearest)
 {
-  std::vector<int> nearest;
-  auto farthest = [&](const std::vector<std::size_t>& from, Atlas_split metric) {
-    const std::vector<double> d = seed_distances(metric, s, from, nearest);
-    return std::size_t(std::max_element(d.begin(), d.end()) - d.begin());
-  };
+  auto farthest = [](const std::vector<double>& d) { return std::size_t(std::max_element(d.begin(), d.end()) - d.begin()); };
   std::vector<std::size_t> seeds;
   if(split == SPLIT_BY_SCALE)
   {
@@ -241,11 +255,15 @@ inline std::vector<std::size_t> split_seeds(Atlas_split split, const Split_graph
   if(seeds.empty())
   {
     split = SPLIT_BY_NORMALS;
-    seeds.push_back(farthest({0}, split));
-    seeds.push_back(farthest({seeds[0]}, split));
+    seeds.push_back(farthest(seed_distances(split, s, {0}, nearest)));
+    seeds.push_back(farthest(seed_distances(split, s, {seeds[0]}, nearest)));
   }
+  std::vector<double> distance = seed_distances(split, s, seeds, nearest);
   while(seeds.size() < (std::min)(count, s.nodes))
-    seeds.push_back(farthest(seeds, split));
+  {
+    seeds.push_back(farthest(distance));
+    add_seed(split, s, seeds.back(), int(seeds.size() - 1), distance, nearest);
+  }
   return seeds;
 }
 
@@ -261,7 +279,7 @@ inline std::vector<int> split_sides(const Atlas_triangles& t, const std::vector<
   const Split_faces d = split_faces(t, faces, split == SPLIT_BY_SCALE ? map : nullptr);
   const Split_graph s = split_graph(subset_neighbors(t, faces), d);
   std::vector<int> node_side;
-  seed_distances(split, s, split_seeds(split, s, count), node_side);
+  split_seeds(split, s, count, node_side);
   std::vector<int> side(faces.size());
   for(std::size_t i = 0; i < faces.size(); ++i)
     side[i] = std::max(node_side[s.node_of[i]], 0);
@@ -290,14 +308,16 @@ inline std::vector<Atlas_chart> uv_islands(const Atlas_triangles& t, const Atlas
   std::vector<Eigen::Vector2d> uv;
   chart_uv_vertices(t, chart, vertices, uv);
   Union_find islands(chart.faces.size());
-  std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_face;
+  std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::size_t> > edge_face;  // (UV edge, face), sorted
+  edge_face.reserve(3 * chart.faces.size());
   for(std::size_t i = 0; i < chart.faces.size(); ++i)
     for(std::size_t k = 0; k < 3; ++k)
-    {
-      const auto inserted = edge_face.emplace(std::minmax(vertices[i][k], vertices[i][(k + 1) % 3]), i);
-      if(!inserted.second && part[inserted.first->second] == part[i])
-        islands.unite(inserted.first->second, i);
-    }
+      edge_face.emplace_back(std::minmax(vertices[i][k], vertices[i][(k + 1) % 3]), i);
+  std::sort(edge_face.begin(), edge_face.end());
+  for(std::size_t a = 0, b = 0; a < edge_face.size(); a = b)
+    for(b = a + 1; b < edge_face.size() && edge_face[b].first == edge_face[a].first; ++b)
+      if(part[edge_face[a].second] == part[edge_face[b].second])
+        islands.unite(edge_face[a].second, edge_face[b].second);
   std::vector<std::size_t> piece_of(chart.faces.size(), chart.faces.size());
   std::vector<Atlas_chart> pieces;
   for(std::size_t i = 0; i < chart.faces.size(); ++i)
