@@ -34,6 +34,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -426,6 +428,78 @@ BOOST_AUTO_TEST_CASE(real_charts_of_fandisk)
   const Packing packing = pack_and_check(charts, check);
   BOOST_TEST_MESSAGE("fandisk: " << charts.size() << " charts, utilization " << packing.utilization << ", "
                                  << packing.statistics.attempts << " attempts, " << packing.statistics.seconds << " s");
+}
+
+// The occupancy (placement.h) against a plain grid of booleans: masks made of random
+// rectangles, placed one after the other, each at the first position (lowest row, then
+// leftmost column) where every cell of the mask is free, which find() must report exactly
+// (also when there is none). Sizes across one and several 64-bit words, bands up to 2^4 rows.
+BOOST_AUTO_TEST_CASE(the_occupancy_finds_the_first_free_position)
+{
+  std::mt19937 random(7);
+  for(int size : {37, 64, 100, 300})
+    BOOST_TEST_CONTEXT("size " << size)
+    {
+      SMP::internal::Atlas_occupancy occupancy;
+      occupancy.reset(size, 4);
+      const std::vector<int> forever(occupancy.table_count(), std::numeric_limits<int>::max());
+      occupancy.start(forever, forever);
+      std::vector<char> taken(std::size_t(size) * std::size_t(size), 0);
+      int placed = 0, refused = 0;
+      for(int trial = 0; trial < 400 && refused < 5; ++trial)
+      {
+        std::uniform_int_distribution<int> side(1, std::max(2, size / 3));
+        const int w = side(random), h = side(random);
+        const int words = SMP::internal::words_for_bits(w);
+        std::vector<std::uint64_t> bits(std::size_t(h) * std::size_t(words), 0);
+        const SMP::internal::Raster_view cells{w, h, words, bits.data()};
+        for(int k = 0; k < 3; ++k)  // a union of three rectangles in the w x h frame
+        {
+          std::uniform_int_distribution<int> x0(0, w - 1), y0(0, h - 1);
+          const int xa = x0(random), ya = y0(random);
+          const int xb = std::uniform_int_distribution<int>(xa, w - 1)(random);
+          const int yb = std::uniform_int_distribution<int>(ya, h - 1)(random);
+          for(int y = (k == 0 ? 0 : ya); y <= yb; ++y)
+            for(int x = xa; x <= xb; ++x)
+              cells.row(y)[x >> 6] |= std::uint64_t(1) << (x & 63);
+        }
+        std::vector<SMP::internal::Mask_run> runs;
+        std::vector<SMP::internal::Mask_band> bands;
+        std::vector<int> begin, end;
+        SMP::internal::compute_mask_runs(cells, runs);
+        SMP::internal::compute_mask_bands(cells, 4, bands, begin, end);
+        const SMP::internal::Chart_mask mask{runs.data(), int(runs.size()), bands.data(), int(bands.size())};
+        auto fits = [&](int px, int py) {
+          for(int y = 0; y < h; ++y)
+            for(int x = 0; x < w; ++x)
+              if(cells.test(x, y) && taken[std::size_t(py + y) * std::size_t(size) + std::size_t(px + x)])
+                return false;
+          return true;
+        };
+        int ex = -1, ey = -1;
+        for(int py = 0; py + h <= size && ex < 0; ++py)
+          for(int px = 0; px + w <= size && ex < 0; ++px)
+            if(fits(px, py))
+              ex = px, ey = py;
+        int reach = 0;
+        const SMP::internal::Frame_position found = occupancy.find(mask, size - w, size - h, 0, reach);
+        BOOST_TEST_REQUIRE(found.x == ex, "trial " << trial << ": x " << found.x << " against " << ex);
+        if(ex < 0)
+        {
+          ++refused;
+          continue;
+        }
+        BOOST_TEST_REQUIRE(found.y == ey, "trial " << trial << ": y " << found.y << " against " << ey);
+        occupancy.place(cells, found.x, found.y);
+        for(int y = 0; y < h; ++y)
+          for(int x = 0; x < w; ++x)
+            if(cells.test(x, y))
+              taken[std::size_t(found.y + y) * std::size_t(size) + std::size_t(found.x + x)] = 1;
+        ++placed;
+      }
+      BOOST_TEST(placed > 10);
+      BOOST_TEST(refused > 0);  // the atlas filled up
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

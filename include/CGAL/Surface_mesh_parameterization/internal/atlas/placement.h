@@ -296,10 +296,10 @@ public:
     row_levels_ = std::min(max_band_level, floor_log2(size)) + 1;
     const std::size_t tables = std::size_t(levels_) * std::size_t(row_levels_);
     bits_.assign(std::size_t(size) * stride_, 0);
-    windows_.assign(tables * std::size_t(size) * stride_, 0);
-    summaries_.assign(tables * std::size_t(size), 0);
+    windows_.resize(tables * std::size_t(size) * stride_);  // written by start() (fill_empty())
+    summaries_.resize(tables * std::size_t(size));
     floors_.assign(std::size_t(row_levels_) * std::size_t(size + 1), 0);
-    longest_.assign(std::size_t(row_levels_) * std::size_t(size), std::make_pair(0, 0));
+    longest_.resize(std::size_t(row_levels_) * std::size_t(size));
     changed_.assign(tables, Row_range());
     spans_.assign(std::size_t(size), Changed_span());
     lifetimes_.assign(tables, std::numeric_limits<int>::max());
@@ -331,7 +331,7 @@ public:
         lifetimes_[table(level - 1, 0)] = std::max(lifetimes_[table(level - 1, 0)], lifetimes_[table(level, 0)]);
     }
     std::fill(spans_.begin(), spans_.end(), Changed_span{0, 0, size_ - 1});
-    update_rows(0, size_ - 1, Changed_span{0, 0, size_ - 1}, true);
+    fill_empty();
   }
 
   // The first frame origin (smallest y, then smallest x) with x <= x_max and y <= y_max where
@@ -383,10 +383,35 @@ public:
       }
     }
     ++placed_;
-    update_rows(y, y + cells.height - 1, all, false);
+    update_rows(y, y + cells.height - 1, all);
   }
 
 private:
+  // The windows, summaries and longest free runs of the empty atlas, of every level (those
+  // that update_rows() computes from empty rows, written directly: start() runs once per
+  // trial density, and computing them row by row took most of a trial's placement of a few
+  // charts). V[k][m] at the row r: the origins x <= size - 2^k when r + 2^m <= size, else none.
+  void fill_empty()
+  {
+    for(int m = 0; m < row_levels_; ++m)
+      for(int level = 0; level < levels_; ++level)
+      {
+        const std::size_t t = table(level, m);
+        const int origins = size_ - (1 << level) + 1;
+        const std::uint64_t groups = low_bits((origins + (1 << group_level_) - 1) >> group_level_);
+        for(int r = 0; r < size_; ++r)
+        {
+          const bool inside = r + (1 << m) <= size_;
+          std::uint64_t* w = window(t, r);
+          for(int k = 0; k < int(stride_); ++k)
+            w[k] = (inside && origins > 64 * k) ? low_bits(origins - 64 * k) : 0;
+          summaries_[t * std::size_t(size_) + std::size_t(r)] = inside ? groups : 0;
+          if(level == 0)
+            longest(m, r) = inside ? std::make_pair(size_, 0) : std::make_pair(0, 0);
+        }
+      }
+  }
+
   // Whether the windows of the table t are read again.
   bool alive(std::size_t t) const { return lifetimes_[t] > placed_; }
   std::uint64_t* row(int r) { return bits_.data() + std::size_t(r) * stride_; }
@@ -445,10 +470,10 @@ private:
 
   // The longest run of V[0][m] at the row r, after the texels of the span were occupied:
   // scanned again only when they meet the longest run kept.
-  void update_longest(int row_level, int r, const Changed_span& span, bool all)
+  void update_longest(int row_level, int r, const Changed_span& span)
   {
     std::pair<int, int>& l = longest(row_level, r);
-    if(all || (span.first < l.second + l.first && l.second <= span.last))
+    if(span.first < l.second + l.first && l.second <= span.last)
       l = longest_set_run(window(table(0, row_level), r), size_);
   }
 
@@ -475,7 +500,7 @@ private:
 
   // The windows W_k = V[k][0] of the row y, for the texels of the span occupied: a level changes
   // only where the level below it did. Extends the rows changed of each level (`changed_`).
-  void update_row_levels(int y, const Changed_span& span, bool all)
+  void update_row_levels(int y, const Changed_span& span)
   {
     const std::uint64_t* occupied = row(y);
     int a = 0, b = 0;
@@ -485,9 +510,9 @@ private:
     });
     if(changed)
       changed_[table(0, 0)].add(y);
-    if(changed || all)
-      update_longest(0, y, span, all);
-    for(int level = 1; level < levels_ && (changed || all) && alive(table(level, 0)); ++level)
+    if(changed)
+      update_longest(0, y, span);
+    for(int level = 1; level < levels_ && changed && alive(table(level, 0)); ++level)
     {
       const std::uint64_t* previous = window(table(level - 1, 0), y);
       level_words(level, span, a, b);
@@ -499,16 +524,16 @@ private:
     }
   }
 
-  // The windows V[k][m], m >= 1, of the rows whose blocks meet the rows y0 .. y1 (`span`: the
-  // union of their spans), for the levels (k, m - 1) that changed.
-  void update_row_blocks(int y0, int y1, const Changed_span& span, bool all)
+  // The windows V[k][m], m >= 1, of the rows whose blocks meet the rows changed of the levels
+  // (k, m - 1) (`span`: the union of the spans of the rows occupied).
+  void update_row_blocks(const Changed_span& span)
   {
     for(int m = 1; m < row_levels_; ++m)
     {
       const int half = 1 << (m - 1);
       for(int level = 0; level < levels_; ++level)
       {
-        const Row_range below = all ? Row_range{y0, y1} : changed_[table(level, m - 1)];
+        const Row_range below = changed_[table(level, m - 1)];
         if(below.first > below.last || !alive(table(level, m)))
           continue;
         int a = 0, b = 0;
@@ -521,8 +546,8 @@ private:
           const bool changed = rewrite_words(current, r, a, b, [&](int k) { return top[k] & bottom[k]; });
           if(changed)
             changed_[current].add(r);
-          if(level == 0 && (changed || all))
-            update_longest(m, r, span, all);
+          if(level == 0 && changed)
+            update_longest(m, r, span);
         }
       }
     }
@@ -530,14 +555,14 @@ private:
 
   // The windows after the rows y0 .. y1 changed: each row in its span (spans_), the blocks
   // in the union `span` of them.
-  void update_rows(int y0, int y1, const Changed_span& span, bool all)
+  void update_rows(int y0, int y1, const Changed_span& span)
   {
     std::fill(changed_.begin(), changed_.end(), Row_range());
     for(int y = y0; y <= y1; ++y)
       if(spans_[std::size_t(y)].first <= spans_[std::size_t(y)].last)
-        update_row_levels(y, spans_[std::size_t(y)], all);
+        update_row_levels(y, spans_[std::size_t(y)]);
     if(span.first <= span.last)
-      update_row_blocks(y0, y1, span, all);
+      update_row_blocks(span);
   }
 
   // The first row whose rows .. + 2^m - 1 hold a free run of `length` columns (size_ when
