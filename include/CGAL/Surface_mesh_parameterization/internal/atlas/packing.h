@@ -41,8 +41,12 @@
 //    fill (its share of rows used, or for a failure its share of the charts' frames placed:
 //    area grows as the density squared), kept inside the bracket of the best fit and the
 //    smallest failure, else bisection. It stops when the fit fills (1 + tolerance)^-2 of the
-//    rows, or the bracket is within the tolerance, or after max_attempts trials past the
-//    first fit; the best scaled-up trial wins.
+//    rows, or the bracket is within the tolerance, or after two failures in a row past the
+//    first fit (a failure costs about what a success does: on the 30 meshes of the atlas
+//    benchmark this takes up to a third off the packing of a few charts, nefertiti-entire
+//    0.024 to 0.016 s, and changes no utilization but moebius's, 0.269 to 0.265, and pig's,
+//    0.685 to 0.673), or after max_attempts trials
+//    past the first fit; the best scaled-up trial wins.
 //
 // Guarantees (tested in test_atlas_packing.cpp): every output UV is in [0,1]^2; the triangles
 // of two charts are at least `gutter` texels apart, and at least `gutter` texels from the
@@ -705,7 +709,7 @@ inline double search_density(const Packing_problem& problem, const Atlas_packing
 {
   const double smallest = smallest_density(problem), largest = largest_density(problem);
   double d = std::min(largest, std::max(smallest, density_for_share(problem, 0.97))), no_fit = HUGE_VAL;
-  for(int after_fit = 0;;)
+  for(int after_fit = 0, failures = 0;;)  // trials past the first fit, failures in a row past it
   {
     const bool fits = try_density(problem, d, ws, stats);
     const double growth = fits ? growth_factor(problem, ws) : 1.;
@@ -715,8 +719,9 @@ inline double search_density(const Packing_problem& problem, const Atlas_packing
       no_fit = std::min(no_fit, d);
     const double fill = atlas_fill(problem, d, fits, ws), tolerance = 1. + options.density_tolerance;
     after_fit += best.density > 0. ? 1 : 0;
+    failures = (fits || best.density == 0.) ? 0 : failures + 1;
     const bool done = no_fit <= best.result() * tolerance || (fits && fill * tolerance * tolerance >= 1.)
-                      || (fits && d >= largest) || after_fit > options.max_attempts;
+                      || (fits && d >= largest) || after_fit > options.max_attempts || failures >= 2;
     if((best.density > 0. && done) || (best.density == 0. && (d <= smallest || stats.attempts >= 64)))
       break;
     d = std::min(largest, std::max(smallest, next_density(d, fill, best.result(), no_fit, options.density_tolerance)));
