@@ -45,8 +45,8 @@
 //    first fit (a failure costs about what a success does: on the 30 meshes of the atlas
 //    benchmark this takes up to a third off the packing of a few charts, nefertiti-entire
 //    0.024 to 0.016 s, and changes no utilization but moebius's, 0.269 to 0.265, and pig's,
-//    0.685 to 0.673), or after max_attempts trials
-//    past the first fit; the best scaled-up trial wins.
+//    0.685 to 0.673), or after max_attempts trials past the first fit; the best scaled-up
+//    trial wins.
 //
 // Guarantees (tested in test_atlas_packing.cpp): every output UV is in [0,1]^2; the triangles
 // of two charts are at least `gutter` texels apart, and at least `gutter` texels from the
