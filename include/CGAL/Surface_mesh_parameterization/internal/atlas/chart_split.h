@@ -234,10 +234,10 @@ inline std::vector<double> seed_distances(Atlas_split split, const Split_graph& 
   return distance;
 }
 
-// The seeds of a split into `count` parts: the two farthest apart nodes (normals: from any
-// node the farthest, then the farthest from it), or the nodes of the smallest and the largest
-// scale; then, while fewer than `count`, the node farthest from the seeds so far (each added
-// with add_seed(): it visits only the nodes it takes). `nearest` gets each node's seed.
+// The seeds of a split into `count` (>= 2) parts: the nodes of the smallest and the largest
+// scale, or (normals) the node farthest from any node; then, while fewer than `count`, the
+// node farthest from the seeds so far (each added with add_seed(): it visits only the nodes it
+// takes), so that the first two are far apart. `nearest` gets each node's seed.
 inline std::vector<std::size_t> split_seeds(Atlas_split split, const Split_graph& s, std::size_t count,
                                             std::vector<int>& nearest)
 {
@@ -256,7 +256,6 @@ inline std::vector<std::size_t> split_seeds(Atlas_split split, const Split_graph
   {
     split = SPLIT_BY_NORMALS;
     seeds.push_back(farthest(seed_distances(split, s, {0}, nearest)));
-    seeds.push_back(farthest(seed_distances(split, s, {seeds[0]}, nearest)));
   }
   std::vector<double> distance = seed_distances(split, s, seeds, nearest);
   while(seeds.size() < (std::min)(count, s.nodes))
@@ -308,12 +307,7 @@ inline std::vector<Atlas_chart> uv_islands(const Atlas_triangles& t, const Atlas
   std::vector<Eigen::Vector2d> uv;
   chart_uv_vertices(t, chart, vertices, uv);
   Union_find islands(chart.faces.size());
-  std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::size_t> > edge_face;  // (UV edge, face), sorted
-  edge_face.reserve(3 * chart.faces.size());
-  for(std::size_t i = 0; i < chart.faces.size(); ++i)
-    for(std::size_t k = 0; k < 3; ++k)
-      edge_face.emplace_back(std::minmax(vertices[i][k], vertices[i][(k + 1) % 3]), i);
-  std::sort(edge_face.begin(), edge_face.end());
+  const std::vector<Uv_edge> edge_face = sorted_uv_edges(vertices);
   for(std::size_t a = 0, b = 0; a < edge_face.size(); a = b)
     for(b = a + 1; b < edge_face.size() && edge_face[b].first == edge_face[a].first; ++b)
       if(part[edge_face[a].second] == part[edge_face[b].second])

@@ -330,7 +330,6 @@ public:
       if(level > 0)
         lifetimes_[table(level - 1, 0)] = std::max(lifetimes_[table(level - 1, 0)], lifetimes_[table(level, 0)]);
     }
-    std::fill(spans_.begin(), spans_.end(), Changed_span{0, 0, size_ - 1});
     fill_empty();
   }
 
