@@ -199,7 +199,8 @@ void unfolded_charts(const SMP::internal::Atlas_triangles& t, const std::vector<
         continue;
       }
     }
-    for(const std::vector<std::size_t>& half : SMP::internal::split_for_bound(t, part, SMP::SPLIT_BY_NORMALS, nullptr))
+    const std::vector<std::array<int, 3> > neighbors = SMP::internal::subset_neighbors(t, part);
+    for(const std::vector<std::size_t>& half : SMP::internal::split_for_bound(t, part, neighbors, SMP::SPLIT_BY_NORMALS, nullptr))
       unfolded_charts(t, half, largest, charts);
   }
 }

@@ -43,7 +43,8 @@ typedef Atlas_surface::Vertex_index                           Atlas_vertex;
 typedef Atlas_surface::Face_index                             Atlas_face;
 
 // A face subset as a Surface_mesh: vertex i is the local (fan) vertex i, face i the subset's
-// face i; `corner_ids` gives the local vertex of each corner of each face.
+// face i; `corner_ids` gives the local vertex of each corner of each face. make_subset_surface()
+// takes the subset's `neighbors` (subset_neighbors()), which the caller computes once per subset.
 struct Subset_surface
 {
   Atlas_surface mesh;
@@ -51,11 +52,12 @@ struct Subset_surface
   bool built = false;
 };
 
-inline Subset_surface make_subset_surface(const Atlas_triangles& t, const std::vector<std::size_t>& faces)
+inline Subset_surface make_subset_surface(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
+                                          const std::vector<std::array<int, 3> >& neighbors)
 {
   Subset_surface s;
   std::vector<int> vertex_of;
-  s.corner_ids = fan_vertex_ids(t, faces, subset_neighbors(t, faces), vertex_of);
+  s.corner_ids = fan_vertex_ids(t, faces, neighbors, vertex_of);
   for(int v : vertex_of)
   {
     const Eigen::Vector3d& p = t.points[std::size_t(v)];
@@ -175,10 +177,10 @@ inline bool flatten_with_seams(Subset_surface& s, const Atlas_triangles& t, cons
 // parameterizer's own check (no flipped face, a simple border: a one-to-one map) needs no
 // second one here, unless corners were welded (weld_rounded_corners()); its border must keep
 // the clearance still (chart_border_is_clear()), which the packing's rounding needs.
-inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size_t>& faces, const Atlas_options& options,
-                           Atlas_chart& chart)
+inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
+                           const std::vector<std::array<int, 3> >& neighbors, const Atlas_options& options, Atlas_chart& chart)
 {
-  Subset_surface s = make_subset_surface(t, faces);
+  Subset_surface s = make_subset_surface(t, faces, neighbors);
   chart.faces = faces;
   if(s.built && (is_topological_disk(s.mesh) ? flatten_disk(s, options, chart) : flatten_with_seams(s, t, faces, options, chart)))
     return weld_rounded_corners(t, chart) ? is_one_to_one_chart(t, chart) : chart_border_is_clear(t, chart);
@@ -265,11 +267,12 @@ inline std::size_t split_count(const Atlas_chart& chart, const Chart_bounds& bou
 // is in as many islands as it has components on the surface. A part that the chart's seams
 // cut into more islands goes back to `pending` whole: flattened again, it may stay one chart.
 inline std::vector<Atlas_chart> pieces_of_split(const Atlas_triangles& t, const Atlas_chart& chart,
+                                                const std::vector<std::array<int, 3> >& neighbors,
                                                 std::vector<std::vector<std::size_t> >& pending, const Chart_bounds& bounds)
 {
-  const std::vector<int> side = split_sides(t, chart.faces, bounds.options.split, &chart, split_count(chart, bounds));
+  const std::vector<int> side = split_sides(t, chart.faces, neighbors, bounds.options.split, &chart, split_count(chart, bounds));
   std::vector<int> island_part;
-  std::vector<Atlas_chart> islands = uv_islands(t, chart, side, &island_part);
+  std::vector<Atlas_chart> islands = uv_islands(t, chart, side, neighbors, &island_part);
   std::vector<std::vector<std::size_t> > faces(std::size_t(*std::max_element(side.begin(), side.end())) + 1);
   for(std::size_t i = 0; i < chart.faces.size(); ++i)
     faces[std::size_t(side[i])].push_back(chart.faces[i]);
@@ -308,7 +311,8 @@ inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::si
     for(const std::vector<std::size_t>& part : edge_components(t, set))
     {
       Atlas_chart chart;
-      const bool one_to_one = flatten_subset(t, part, bounds.options, chart) || part.size() == 1;
+      const std::vector<std::array<int, 3> > neighbors = subset_neighbors(t, part);
+      const bool one_to_one = flatten_subset(t, part, neighbors, bounds.options, chart) || part.size() == 1;
       if(one_to_one)
         measure_chart(t, chart);
       const bool within = one_to_one && within_distortion_bounds(chart, bounds);
@@ -320,11 +324,11 @@ inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::si
       ++splits;
       if(one_to_one)
       {
-        settle_pieces(t, within ? cut_across(t, chart) : pieces_of_split(t, chart, pending, bounds),
+        settle_pieces(t, within ? cut_across(t, chart) : pieces_of_split(t, chart, neighbors, pending, bounds),
                       bounds, charts, pending, splits);
         continue;
       }
-      std::array<std::vector<std::size_t>, 2> halves = split_for_bound(t, part, bounds.options.split, nullptr);
+      std::array<std::vector<std::size_t>, 2> halves = split_for_bound(t, part, neighbors, bounds.options.split, nullptr);
       pending.push_back(std::move(halves[1]));
       pending.push_back(std::move(halves[0]));
     }

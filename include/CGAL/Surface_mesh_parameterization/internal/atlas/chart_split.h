@@ -180,12 +180,23 @@ inline double step_cost(Atlas_split split, const Split_graph& s, std::size_t a, 
   return change + (s.centroid[a] - s.centroid[b]).norm() / s.length;
 }
 
+// The cost of every step (step_cost()), per entry of `s.adjacent`: computed once, as each
+// Dijkstra run of a split crosses every link.
+inline std::vector<double> step_costs(Atlas_split split, const Split_graph& s)
+{
+  std::vector<double> cost(s.adjacent.size());
+  for(std::size_t n = 0; n < s.nodes; ++n)
+    for(std::size_t i = s.offsets[n]; i < s.offsets[n + 1]; ++i)
+      cost[i] = step_cost(split, s, n, s.adjacent[i]);
+  return cost;
+}
+
 typedef std::pair<double, std::size_t> Split_step;
 typedef std::priority_queue<Split_step, std::vector<Split_step>, std::greater<Split_step> > Split_queue;
 
-// Dijkstra's algorithm from the nodes in `queue`: lowers `distance` (to the nearest seed) and
-// `nearest` (that seed) wherever a path from them is shorter.
-inline void relax_seed_distances(Atlas_split split, const Split_graph& s, Split_queue& queue,
+// Dijkstra's algorithm from the nodes in `queue` (`cost`: step_costs()): lowers `distance`
+// (to the nearest seed) and `nearest` (that seed) wherever a path from them is shorter.
+inline void relax_seed_distances(const Split_graph& s, const std::vector<double>& cost, Split_queue& queue,
                                  std::vector<double>& distance, std::vector<int>& nearest)
 {
   while(!queue.empty())
@@ -197,7 +208,7 @@ inline void relax_seed_distances(Atlas_split split, const Split_graph& s, Split_
     for(std::size_t i = s.offsets[step.second]; i < s.offsets[step.second + 1]; ++i)
     {
       const std::size_t next = s.adjacent[i];
-      const double d = step.first + step_cost(split, s, step.second, next);
+      const double d = step.first + cost[i];
       if(d < distance[next])
       {
         distance[next] = d;
@@ -210,7 +221,7 @@ inline void relax_seed_distances(Atlas_split split, const Split_graph& s, Split_
 
 // Adds the seed `seed` (the index-th) to the distances to the nearest seed: only the nodes it
 // brings nearer are visited.
-inline void add_seed(Atlas_split split, const Split_graph& s, std::size_t seed, int index,
+inline void add_seed(const Split_graph& s, const std::vector<double>& cost, std::size_t seed, int index,
                      std::vector<double>& distance, std::vector<int>& nearest)
 {
   if(nearest[seed] >= 0 && !(distance[seed] > 0.))
@@ -219,18 +230,18 @@ inline void add_seed(Atlas_split split, const Split_graph& s, std::size_t seed, 
   distance[seed] = 0.;
   nearest[seed] = index;
   queue.emplace(0., seed);
-  relax_seed_distances(split, s, queue, distance, nearest);
+  relax_seed_distances(s, cost, queue, distance, nearest);
 }
 
 // Dijkstra's algorithm from `seeds`: the distance of each node to the nearest seed, and which
 // seed that is (`nearest`).
-inline std::vector<double> seed_distances(Atlas_split split, const Split_graph& s, const std::vector<std::size_t>& seeds,
-                                          std::vector<int>& nearest)
+inline std::vector<double> seed_distances(const Split_graph& s, const std::vector<double>& cost,
+                                          const std::vector<std::size_t>& seeds, std::vector<int>& nearest)
 {
   std::vector<double> distance(s.nodes, std::numeric_limits<double>::infinity());
   nearest.assign(s.nodes, -1);
   for(std::size_t i = 0; i < seeds.size(); ++i)
-    add_seed(split, s, seeds[i], int(i), distance, nearest);
+    add_seed(s, cost, seeds[i], int(i), distance, nearest);
   return distance;
 }
 
@@ -252,16 +263,14 @@ inline std::vector<std::size_t> split_seeds(Atlas_split split, const Split_graph
     if(*extremes.first != *extremes.second)
       seeds = {*extremes.first, *extremes.second};
   }
+  const std::vector<double> cost = step_costs(seeds.empty() ? SPLIT_BY_NORMALS : split, s);
   if(seeds.empty())
-  {
-    split = SPLIT_BY_NORMALS;
-    seeds.push_back(farthest(seed_distances(split, s, {0}, nearest)));
-  }
-  std::vector<double> distance = seed_distances(split, s, seeds, nearest);
+    seeds.push_back(farthest(seed_distances(s, cost, {0}, nearest)));
+  std::vector<double> distance = seed_distances(s, cost, seeds, nearest);
   while(seeds.size() < (std::min)(count, s.nodes))
   {
     seeds.push_back(farthest(distance));
-    add_seed(split, s, seeds.back(), int(seeds.size() - 1), distance, nearest);
+    add_seed(s, cost, seeds.back(), int(seeds.size() - 1), distance, nearest);
   }
   return seeds;
 }
@@ -270,13 +279,14 @@ inline std::vector<std::size_t> split_seeds(Atlas_split split, const Split_graph
 // the bound, each face with its nearest seed (split_seeds()); `map` is its one-to-one map
 // (SPLIT_BY_SCALE), or null when it has none (the normals are used then). Input polygons are
 // kept whole (parts_keeping_polygons()).
-inline std::vector<int> split_sides(const Atlas_triangles& t, const std::vector<std::size_t>& faces, Atlas_split split,
+inline std::vector<int> split_sides(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
+                                    const std::vector<std::array<int, 3> >& neighbors, Atlas_split split,
                                     const Atlas_chart* map, std::size_t count = 2)
 {
   if(map == nullptr)
     split = SPLIT_BY_NORMALS;
   const Split_faces d = split_faces(t, faces, split == SPLIT_BY_SCALE ? map : nullptr);
-  const Split_graph s = split_graph(subset_neighbors(t, faces), d);
+  const Split_graph s = split_graph(neighbors, d);
   std::vector<int> node_side;
   split_seeds(split, s, count, node_side);
   std::vector<int> side(faces.size());
@@ -285,33 +295,56 @@ inline std::vector<int> split_sides(const Atlas_triangles& t, const std::vector<
   return parts_keeping_polygons(t, faces, side);
 }
 
+// The same, with the faces' neighbors computed (subset_neighbors()).
+inline std::vector<int> split_sides(const Atlas_triangles& t, const std::vector<std::size_t>& faces, Atlas_split split,
+                                    const Atlas_chart* map, std::size_t count = 2)
+{
+  return split_sides(t, faces, subset_neighbors(t, faces), split, map, count);
+}
+
 // The two parts of that split (split_sides()); the caller splits each into its components.
 inline std::array<std::vector<std::size_t>, 2> split_for_bound(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
+                                                              const std::vector<std::array<int, 3> >& neighbors,
                                                               Atlas_split split, const Atlas_chart* map)
 {
-  const std::vector<int> side = split_sides(t, faces, split, map);
+  const std::vector<int> side = split_sides(t, faces, neighbors, split, map);
   std::array<std::vector<std::size_t>, 2> parts;
   for(std::size_t i = 0; i < faces.size(); ++i)
     parts[std::size_t(side[i])].push_back(faces[i]);
   return parts;
 }
 
+// Whether face i of a chart and its neighbor g across the edge opposite corner k of i
+// (subset_neighbors()) give that edge's two ends the same UVs: the edge is no seam of the map.
+inline bool shares_uv_edge(const Atlas_triangles& t, const Atlas_chart& chart, std::size_t i, int k, std::size_t g)
+{
+  const Face_indices& vi = t.faces[chart.faces[i]];
+  const Face_indices& vg = t.faces[chart.faces[g]];
+  for(int e : {(k + 1) % 3, (k + 2) % 3})
+  {
+    const std::size_t kg = std::size_t(std::find(vg.begin(), vg.end(), vi[std::size_t(e)]) - vg.begin());
+    if(kg == 3 || chart.corners[g][kg] != chart.corners[i][std::size_t(e)])
+      return false;
+  }
+  return true;
+}
+
 // The UV islands of a chart within each part (`part`: per face): faces of one part joined
-// across the edges whose two ends have the same UVs on both sides; each island a chart that
-// keeps its faces' UVs, in the order of their first faces; `island_part`, when given, gets the
-// part of each island.
+// across the edges (`neighbors`: subset_neighbors() of the chart's faces) whose two ends have
+// the same UVs on both sides; each island a chart that keeps its faces' UVs, in the order of
+// their first faces; `island_part`, when given, gets the part of each island.
 inline std::vector<Atlas_chart> uv_islands(const Atlas_triangles& t, const Atlas_chart& chart, const std::vector<int>& part,
+                                           const std::vector<std::array<int, 3> >& neighbors,
                                            std::vector<int>* island_part = nullptr)
 {
-  std::vector<std::array<std::size_t, 3> > vertices;
-  std::vector<Eigen::Vector2d> uv;
-  chart_uv_vertices(t, chart, vertices, uv);
   Union_find islands(chart.faces.size());
-  const std::vector<Uv_edge> edge_face = sorted_uv_edges(vertices);
-  for(std::size_t a = 0, b = 0; a < edge_face.size(); a = b)
-    for(b = a + 1; b < edge_face.size() && edge_face[b].first == edge_face[a].first; ++b)
-      if(part[edge_face[a].second] == part[edge_face[b].second])
-        islands.unite(edge_face[a].second, edge_face[b].second);
+  for(std::size_t i = 0; i < chart.faces.size(); ++i)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int g = neighbors[i][std::size_t(k)];
+      if(g > int(i) && part[i] == part[std::size_t(g)] && shares_uv_edge(t, chart, i, k, std::size_t(g)))
+        islands.unite(i, std::size_t(g));
+    }
   std::vector<std::size_t> piece_of(chart.faces.size(), chart.faces.size());
   std::vector<Atlas_chart> pieces;
   for(std::size_t i = 0; i < chart.faces.size(); ++i)
@@ -350,7 +383,7 @@ inline std::vector<Atlas_chart> cut_across(const Atlas_triangles& t, const Atlas
   std::vector<int> side(chart.faces.size());
   for(std::size_t i = 0; i < chart.faces.size(); ++i)
     side[i] = chart.box.rotate(chart.corners[i][0] + chart.corners[i][1] + chart.corners[i][2]).x() > 1.5 * (low + high);
-  return uv_islands(t, chart, parts_keeping_polygons(t, chart.faces, side));
+  return uv_islands(t, chart, parts_keeping_polygons(t, chart.faces, side), subset_neighbors(t, chart.faces));
 }
 
 } // namespace internal

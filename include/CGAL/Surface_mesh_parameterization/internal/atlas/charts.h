@@ -34,7 +34,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -165,13 +164,18 @@ inline std::vector<std::array<int, 3> > fan_vertex_ids(const Atlas_triangles& t,
 inline std::vector<int> parts_keeping_polygons(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
                                                const std::vector<int>& side)
 {
-  std::map<std::size_t, int> polygon_part;
-  std::vector<int> part(faces.size());
+  std::vector<std::pair<std::size_t, std::size_t> > order(faces.size());  // (polygon, face), sorted
   for(std::size_t i = 0; i < faces.size(); ++i)
-    part[i] = polygon_part.emplace(t.polygon(faces[i]), side[i]).first->second;
+    order[i] = {t.polygon(faces[i]), i};
+  std::sort(order.begin(), order.end());
+  std::vector<int> part(faces.size());
+  std::size_t polygons = 0;
+  for(std::size_t a = 0, b = 0; a < order.size(); a = b, ++polygons)
+    for(b = a; b < order.size() && order[b].first == order[a].first; ++b)
+      part[order[b].second] = side[order[a].second];  // the side of the polygon's first face
   if(faces.size() > 1 && std::all_of(part.begin(), part.end(), [&](int p) { return p == part[0]; }))
   {
-    const bool one_polygon = polygon_part.size() == 1;
+    const bool one_polygon = polygons == 1;
     for(std::size_t i = 0; i < faces.size(); ++i)
       if(one_polygon ? i + 1 == faces.size() : same_polygon(t, faces[i], faces.back()))
         part[i] = part[i] == 0 ? 1 : 0;
