@@ -115,13 +115,23 @@ Conformal_parameterizer_3<Graph> chart_parameterizer(const Atlas_options& option
     Automatic_border<>(Distortion_bound{options.max_angle_distortion, options.max_area_spread}));
 }
 
+// The angle distortion of the layout the parameterizer kept (the paper's, over the disk or the
+// surface cut open along its seams: the chart's, which measure_chart() then need not compute).
+inline void keep_angle_distortion(const Parameterization_report& report, Atlas_chart& chart)
+{
+  chart.angle_distortion = report.border_candidates[std::size_t(report.chosen_candidate)].objective;
+  chart.angle_known = true;
+}
+
 // The disk flattened by the complete parameterizer (automatic border).
 inline bool flatten_disk(Subset_surface& s, const Atlas_options& options, Atlas_chart& chart)
 {
   auto uv = s.mesh.add_property_map<Atlas_vertex, Atlas_kernel::Point_2>("v:atlas_uv").first;
   const auto bhd = main_border(s.mesh).first;
-  if(parameterize(s.mesh, chart_parameterizer<Atlas_surface>(options), bhd, uv) != OK)
+  Parameterization_report report;
+  if(parameterize(s.mesh, chart_parameterizer<Atlas_surface>(options), bhd, uv, &report) != OK)
     return false;
+  keep_angle_distortion(report, chart);
   chart.flattening = DISK_CHART;
   corners_from_uv(s.mesh, s, uv, [](std::size_t i) { return Atlas_face(Atlas_surface::size_type(i)); },
                   [&s](Atlas_surface::Halfedge_index h) { return int(target(h, s.mesh)); }, chart);
@@ -163,8 +173,10 @@ inline bool flatten_with_seams(Subset_surface& s, const Atlas_triangles& t, cons
   seam_mesh.set_seam_edges_number(seams.number_of_seam_edges);
   auto uv = get(CGAL::dynamic_vertex_property_t<Atlas_kernel::Point_2>(), seam_mesh);
   const auto bhd = main_border(seam_mesh).first;
-  if(parameterize(seam_mesh, chart_parameterizer<Seam_mesh>(options), bhd, uv) != OK)
+  Parameterization_report report;
+  if(parameterize(seam_mesh, chart_parameterizer<Seam_mesh>(options), bhd, uv, &report) != OK)
     return false;
+  keep_angle_distortion(report, chart);
   chart.flattening = SEAMED_CHART;
   typedef typename boost::graph_traits<Seam_mesh>::halfedge_descriptor Seam_halfedge;
   corners_from_uv(seam_mesh, s, uv, [](std::size_t i) { return Atlas_face(Atlas_surface::size_type(i)); },
@@ -183,7 +195,12 @@ inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size
   Subset_surface s = make_subset_surface(t, faces, neighbors);
   chart.faces = faces;
   if(s.built && (is_topological_disk(s.mesh) ? flatten_disk(s, options, chart) : flatten_with_seams(s, t, faces, options, chart)))
-    return weld_rounded_corners(t, chart) ? is_one_to_one_chart(t, chart) : chart_border_is_clear(t, chart);
+  {
+    if(!weld_rounded_corners(t, chart))
+      return chart_border_is_clear(t, chart);
+    chart_angle_distortion(t, chart);  // of the moved UVs
+    return is_one_to_one_chart(t, chart);
+  }
   chart = unfold_isometrically(t, faces);
   return is_one_to_one_chart(t, chart);
 }
@@ -209,12 +226,22 @@ inline bool compact_enough(const Atlas_chart& chart, const Chart_bounds& bounds)
   return chart.compactness >= bounds.options.min_compactness || chart.length <= bounds.short_length;
 }
 
-// The figures of a one-to-one chart: areas, area spread, angle distortion, compactness.
-inline void measure_chart(const Atlas_triangles& t, Atlas_chart& chart)
+// The figures of a one-to-one chart that the bounds read; returns whether it meets the
+// distortion bounds. Its areas and area spread; its angle distortion, unless the parameterizer
+// gave it (angle_known: a flattened chart, whose angle distortion split_count() reads) or the
+// area spread misses its bound (a piece of a split, then flattened again); its compactness
+// (and smallest box) when it meets the distortion bounds (the only charts kept, or cut across).
+inline bool measure_chart(const Atlas_triangles& t, Atlas_chart& chart, const Chart_bounds& bounds)
 {
   chart_area_figures(t, chart);
-  chart_angle_distortion(t, chart);
+  if(chart.area_spread > bounds.options.max_area_spread)
+    return false;
+  if(!chart.angle_known)
+    chart_angle_distortion(t, chart);
+  if(!within_distortion_bounds(chart, bounds))
+    return false;
   chart_compactness(chart);
+  return true;
 }
 
 // One-to-one pieces of a chart's map (cut_across(), or the UV islands of the parts of a
@@ -231,8 +258,7 @@ inline void settle_pieces(const Atlas_triangles& t, std::vector<Atlas_chart> pie
   {
     Atlas_chart piece = std::move(pieces.back());
     pieces.pop_back();
-    measure_chart(t, piece);
-    if(!within_distortion_bounds(piece, bounds) || !chart_border_is_clear(t, piece))
+    if(!measure_chart(t, piece, bounds) || !chart_border_is_clear(t, piece))
       pending.push_back(std::move(piece.faces));
     else if(piece.faces.size() == 1 || compact_enough(piece, bounds))
       charts.push_back(std::move(piece));
@@ -313,9 +339,7 @@ inline void flatten_face_set(const Atlas_triangles& t, const std::vector<std::si
       Atlas_chart chart;
       const std::vector<std::array<int, 3> > neighbors = subset_neighbors(t, part);
       const bool one_to_one = flatten_subset(t, part, neighbors, bounds.options, chart) || part.size() == 1;
-      if(one_to_one)
-        measure_chart(t, chart);
-      const bool within = one_to_one && within_distortion_bounds(chart, bounds);
+      const bool within = one_to_one && measure_chart(t, chart, bounds);
       if(one_to_one && (part.size() == 1 || (within && compact_enough(chart, bounds))))
       {
         charts.push_back(std::move(chart));

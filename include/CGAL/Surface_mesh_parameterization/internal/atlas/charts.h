@@ -65,6 +65,7 @@ struct Atlas_chart
   std::vector<std::array<Eigen::Vector2d, 3> > corners;
   Chart_flattening flattening = DISK_CHART;
   double angle_distortion = 0.;  // the paper's, over the chart cut open along its seams
+  bool angle_known = false;      // angle_distortion is computed for these UVs
   double area_spread = 0.;       // area-weighted mean |log(UV area / 3D area)| after one scale
   double compactness = 0.;       // UV area over the square of its smallest box's longer side
   double length = 0.;            // that side at the 3D scale (UV area scaled to the 3D area)
@@ -480,6 +481,7 @@ inline void chart_angle_distortion(const Atlas_triangles& t, Atlas_chart& chart)
       if(adjacency.neighbor(i, k) < 0)
         on_border[std::size_t(faces[i][std::size_t((k + 1) % 3)])] = on_border[std::size_t(faces[i][std::size_t((k + 2) % 3)])] = true;
   chart.angle_distortion = Angle_distortion(points, faces, on_border, points.size())(uv);
+  chart.angle_known = true;
 }
 
 } // namespace internal
