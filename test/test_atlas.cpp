@@ -655,7 +655,8 @@ BOOST_AUTO_TEST_CASE(a_cut_across_keeps_the_uvs)
 }
 
 // The number of parts of a split of a chart cut open by seams: 1 + ceil(log2 r) for a map r
-// times over the larger of its two bounds' ratios, 2 to 8; a disk's: 2.
+// times over the larger of its two bounds' ratios, 2 to 8; a disk's: the same from 2 to 3,
+// and 2 when r < 4.
 BOOST_AUTO_TEST_CASE(a_chart_far_over_the_bounds_is_split_into_more_parts)
 {
   SMP::Atlas_options options;
@@ -663,9 +664,15 @@ BOOST_AUTO_TEST_CASE(a_chart_far_over_the_bounds_is_split_into_more_parts)
   options.max_angle_distortion = 0.1;
   const SMP::internal::Chart_bounds bounds{options, 0.};
   SMP::internal::Atlas_chart chart;
-  chart.area_spread = 20.;
   chart.flattening = SMP::DISK_CHART;
-  BOOST_CHECK_EQUAL(SMP::internal::split_count(chart, bounds), 2u);
+  for(const std::array<double, 3>& c : {std::array<double, 3>{{0.3, 0., 2.}}, std::array<double, 3>{{0.79, 0.05, 2.}},
+                                        std::array<double, 3>{{0.1, 0.39, 2.}}, std::array<double, 3>{{0.8, 0., 3.}},
+                                        std::array<double, 3>{{0.1, 0.4, 3.}}, std::array<double, 3>{{20., 0., 3.}}})
+  {
+    chart.area_spread = c[0];
+    chart.angle_distortion = c[1];
+    BOOST_CHECK_EQUAL(SMP::internal::split_count(chart, bounds), std::size_t(c[2]));
+  }
   chart.flattening = SMP::SEAMED_CHART;
   for(const std::array<double, 3>& c : {std::array<double, 3>{{0.3, 0., 2.}}, std::array<double, 3>{{0.8, 0.05, 3.}},
                                         std::array<double, 3>{{0.81, 0.05, 4.}}, std::array<double, 3>{{0.1, 0.35, 3.}},

@@ -271,21 +271,26 @@ inline void settle_pieces(const Atlas_triangles& t, std::vector<Atlas_chart> pie
   }
 }
 
-// The number of parts of a split of a chart cut open by seams (a closed or higher-genus part:
-// SEAMED_CHART) whose one-to-one map misses the distortion bounds by the factor `over` (the
-// larger of its area spread and its angle distortion over their bounds): 1 + ceil(log2(over)),
-// from 2 to 8, so that a chart far from the bounds is not halved and flattened again level
-// after level. A disk is split in two: split into more, a part may surround another and be
-// flattened with seams, with more angle distortion (lion-head.off against Boundary First
-// Flattening). Chosen by measurement (benchmark/README.md, *Bounds*).
+// The number of parts of a split of a chart whose one-to-one map misses the distortion
+// bounds by the factor `over` (the larger of its area spread and its angle distortion over
+// their bounds): 1 + ceil(log2(over)), so that a chart far from the bounds is not halved and
+// flattened again level after level; from 2 to 8 for a chart cut open by seams (a closed or
+// higher-genus part: SEAMED_CHART), from 2 to 3 for a disk (or an unfolded chart), and 2 for a disk less than 4
+// times over. Split into more, a part of a disk may surround another and be flattened with
+// seams, with more angle distortion (lion-head.off against Boundary First Flattening, every
+// disk split into 1 + ceil(log2(over)) parts); a disk 4 times over or more is a long limb or a
+// tube cut open, and three parts there save flattenings (Hand1.off: 1.35 to 1.24 s) and keep
+// the angle distortion (lion-head.off: the paper's 0.022 to 0.008). Chosen by measurement
+// (benchmark/README.md, *Bounds*).
 inline std::size_t split_count(const Atlas_chart& chart, const Chart_bounds& bounds)
 {
-  if(chart.flattening != SEAMED_CHART)
-    return 2u;
   const double over = (std::max)(chart.area_spread / bounds.options.max_area_spread,
                                  chart.angle_distortion / bounds.options.max_angle_distortion);
-  const double parts = 1. + std::ceil(std::log2(over));
-  return (parts >= 8.) ? 8u : (parts > 2.) ? std::size_t(parts) : 2u;  // NaN (0 / 0): 2
+  const bool seamed = chart.flattening == SEAMED_CHART;
+  if(!seamed && !(over >= 4.))
+    return 2u;  // NaN (0 / 0) too
+  const double parts = (std::min)(1. + std::ceil(std::log2(over)), seamed ? 8. : 3.);
+  return (parts > 2.) ? std::size_t(parts) : 2u;  // NaN: 2
 }
 
 // The pieces of the split of a chart with a one-to-one map (split_sides(), into
