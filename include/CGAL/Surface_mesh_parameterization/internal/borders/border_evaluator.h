@@ -86,8 +86,11 @@ public:
   // angle distortion alone)
   void rank_by(const Distortion_bound& bound) { m_bound = bound; }
 
-  // evaluates the requested borders with one interior; returns their trials
-  std::vector<Border_trial> evaluate(const std::vector<Request>& batch, bool mean_value)
+  // evaluates the requested borders with one interior; returns their trials. Without
+  // `estimates` a layout that is not one-to-one is not measured (its estimate, area spread
+  // and rank stay infinite, its flipped faces are counted up to one): the searches of the
+  // smallest valid blend read only whether a layout is valid.
+  std::vector<Border_trial> evaluate(const std::vector<Request>& batch, bool mean_value, bool estimates = true)
   {
     std::vector<Border_solution> solutions(batch.size());
     std::vector<bool> placed(batch.size());
@@ -97,7 +100,7 @@ public:
     std::vector<Border_trial> result;
     for(std::size_t i = 0; i < batch.size(); ++i)
     {
-      const Border_trial trial = judge(batch[i], mean_value, solved && placed[i], solutions[i]);
+      const Border_trial trial = judge(batch[i], mean_value, solved && placed[i], estimates, solutions[i]);
       m_trials.push_back(trial);
       result.push_back(trial);
       if(trial.valid && trial.rank < best_rank())
@@ -121,7 +124,8 @@ public:
   const Border_solution& best_solution() const { return m_best_solution; }
 
 private:
-  Border_trial judge(const Request& request, bool mean_value, bool laid_out, const Border_solution& solution)
+  Border_trial judge(const Request& request, bool mean_value, bool laid_out, bool estimates,
+                     const Border_solution& solution)
   {
     const double inf = std::numeric_limits<double>::infinity();
     Border_trial trial{request.first, request.second, mean_value, false, 0, inf, inf, inf, inf};
@@ -129,11 +133,14 @@ private:
       return trial;
     std::vector<Eigen::Vector2d> uv;
     assemble_uv(m_disk, solution, uv);
+    trial.flipped_faces = count_flips(m_disk.faces_indices(), m_disk.number_of_real_faces(), uv,
+                                      estimates ? std::size_t(-1) : std::size_t(1));
+    trial.valid = trial.flipped_faces == 0 && border_curves_are_valid(m_disk, uv);
+    if(!trial.valid && !estimates)
+      return trial;
     trial.estimate = m_objective(uv);
     trial.area_spread = m_area(uv);
     trial.rank = m_bound.rank(trial.estimate, trial.area_spread);
-    trial.flipped_faces = count_flips(m_disk.faces_indices(), m_disk.number_of_real_faces(), uv);
-    trial.valid = trial.flipped_faces == 0 && border_curves_are_valid(m_disk, uv);
     if(trial.valid)
       trial.objective = trial.estimate;
     return trial;

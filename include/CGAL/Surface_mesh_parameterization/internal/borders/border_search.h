@@ -47,7 +47,7 @@ void search_smallest_valid_blend(Evaluator& evaluator, const std::vector<Border_
     batch.clear();
     for(std::size_t i = 0; i < members.size(); ++i)
       batch.emplace_back(members[i], 0.5 * (invalid[i] + (valid[i] < 0. ? 1. : valid[i])));
-    const std::vector<Border_trial> trials = evaluator.evaluate(batch, mean_value);
+    const std::vector<Border_trial> trials = evaluator.evaluate(batch, mean_value, false);
     for(std::size_t i = 0; i < members.size(); ++i)
       (trials[i].valid ? valid[i] : invalid[i]) = batch[i].second;
   }
@@ -56,7 +56,7 @@ void search_smallest_valid_blend(Evaluator& evaluator, const std::vector<Border_
     if(valid[i] < 0.)
       batch.emplace_back(members[i], 1.);
   if(!batch.empty())
-    evaluator.evaluate(batch, mean_value);
+    evaluator.evaluate(batch, mean_value, false);
 }
 
 // The layout of one member's own border; `repairable` gets the member.
@@ -153,7 +153,7 @@ void repair_by_blending(Evaluator& evaluator, const std::vector<Border_family>& 
   std::vector<typename Evaluator::Request> batch;
   for(Border_family m : members)
     batch.emplace_back(m, evaluator.members().own_blend(m));
-  const std::vector<Border_trial> own = evaluator.evaluate(batch, true);
+  const std::vector<Border_trial> own = evaluator.evaluate(batch, true, false);
   std::vector<Border_family> search;
   bool circle_folds = false;
   for(const Border_trial& t : own)

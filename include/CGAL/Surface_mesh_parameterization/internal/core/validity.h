@@ -68,12 +68,13 @@ inline bool is_strictly_convex_clockwise(const std::vector<Eigen::Vector2d>& p)
 }
 
 // Triangles of `faces` (the first `count` of them) whose UV triangle is not positively
-// oriented.
+// oriented; the count stops at `enough` (1: whether there is one).
 template <class Faces>
-std::size_t count_flips(const Faces& faces, std::size_t count, const std::vector<Eigen::Vector2d>& uv)
+std::size_t count_flips(const Faces& faces, std::size_t count, const std::vector<Eigen::Vector2d>& uv,
+                        std::size_t enough = std::size_t(-1))
 {
   std::size_t flips = 0;
-  for(std::size_t f = 0; f < count; ++f)
+  for(std::size_t f = 0; f < count && flips < enough; ++f)
   {
     const auto& t = faces[f];
     if(CGAL::orientation(exact_point(uv[static_cast<std::size_t>(t[0])]), exact_point(uv[static_cast<std::size_t>(t[1])]),
