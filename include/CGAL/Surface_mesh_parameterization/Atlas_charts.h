@@ -275,13 +275,13 @@ inline void settle_pieces(const Atlas_triangles& t, std::vector<Atlas_chart> pie
 // bounds by the factor `over` (the larger of its area spread and its angle distortion over
 // their bounds): 1 + ceil(log2(over)), so that a chart far from the bounds is not halved and
 // flattened again level after level; from 2 to 8 for a chart cut open by seams (a closed or
-// higher-genus part: SEAMED_CHART), from 2 to 3 for a disk (or an unfolded chart), and 2 for a disk less than 4
-// times over. Split into more, a part of a disk may surround another and be flattened with
-// seams, with more angle distortion (lion-head.off against Boundary First Flattening, every
-// disk split into 1 + ceil(log2(over)) parts); a disk 4 times over or more is a long limb or a
-// tube cut open, and three parts there save flattenings (Hand1.off: 1.35 to 1.24 s) and keep
-// the angle distortion (lion-head.off: the paper's 0.022 to 0.008). Chosen by measurement
-// (benchmark/README.md, *Bounds*).
+// higher-genus part: SEAMED_CHART), from 2 to 3 for a disk (or an unfolded chart), and 2 for
+// a disk less than 4 times over. Split into more, a part of a disk may surround another and be
+// flattened with seams, with more angle distortion (lion-head.off against Boundary First
+// Flattening, every disk split into 1 + ceil(log2(over)) parts); a disk 4 times over or more
+// is a long limb or a tube cut open, and three parts there save flattenings (Hand1.off: 1.35
+// to 1.24 s) and keep the angle distortion (lion-head.off: the paper's 0.022 to 0.008).
+// Chosen by measurement (benchmark/README.md, *Bounds*, eighth run).
 inline std::size_t split_count(const Atlas_chart& chart, const Chart_bounds& bounds)
 {
   const double over = (std::max)(chart.area_spread / bounds.options.max_area_spread,
