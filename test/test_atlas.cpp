@@ -703,7 +703,8 @@ BOOST_AUTO_TEST_CASE(a_split_into_parts_keeps_flat_sides_whole)
   for(std::size_t count : {2u, 3u, 6u})
     BOOST_TEST_CONTEXT(count << " parts")
     {
-      const std::vector<int> part = SMP::internal::split_sides(t, chart.faces, SMP::SPLIT_BY_NORMALS, nullptr, count);
+      const std::vector<int> part = SMP::internal::split_sides(t, chart.faces, SMP::internal::subset_neighbors(t, chart.faces),
+                                                               SMP::SPLIT_BY_NORMALS, nullptr, count);
       std::vector<std::vector<std::size_t> > faces(count);
       std::map<int, int> part_of_side;
       std::map<std::size_t, int> part_of_quad;

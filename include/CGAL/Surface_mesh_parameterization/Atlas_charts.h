@@ -198,8 +198,10 @@ inline bool flatten_subset(const Atlas_triangles& t, const std::vector<std::size
   {
     if(!weld_rounded_corners(t, chart))
       return chart_border_is_clear(t, chart);
+    if(!is_one_to_one_chart(t, chart))
+      return false;
     chart_angle_distortion(t, chart);  // of the moved UVs
-    return is_one_to_one_chart(t, chart);
+    return true;
   }
   chart = unfold_isometrically(t, faces);
   return is_one_to_one_chart(t, chart);

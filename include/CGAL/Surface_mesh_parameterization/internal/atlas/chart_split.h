@@ -295,13 +295,6 @@ inline std::vector<int> split_sides(const Atlas_triangles& t, const std::vector<
   return parts_keeping_polygons(t, faces, side);
 }
 
-// The same, with the faces' neighbors computed (subset_neighbors()).
-inline std::vector<int> split_sides(const Atlas_triangles& t, const std::vector<std::size_t>& faces, Atlas_split split,
-                                    const Atlas_chart* map, std::size_t count = 2)
-{
-  return split_sides(t, faces, subset_neighbors(t, faces), split, map, count);
-}
-
 // The two parts of that split (split_sides()); the caller splits each into its components.
 inline std::array<std::vector<std::size_t>, 2> split_for_bound(const Atlas_triangles& t, const std::vector<std::size_t>& faces,
                                                               const std::vector<std::array<int, 3> >& neighbors,

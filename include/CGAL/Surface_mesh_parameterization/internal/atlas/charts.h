@@ -354,22 +354,6 @@ inline void chart_uv_vertices(const Atlas_triangles& t, const Atlas_chart& chart
   }
 }
 
-// A UV edge of a face of a chart: its two UV vertices (the smaller first) and its face.
-typedef std::pair<std::pair<std::size_t, std::size_t>, std::size_t> Uv_edge;
-
-// The UV edges of every face (`vertices`: each face's UV vertices, chart_uv_vertices()),
-// sorted: the faces of one edge follow each other, by face.
-inline std::vector<Uv_edge> sorted_uv_edges(const std::vector<std::array<std::size_t, 3> >& vertices)
-{
-  std::vector<Uv_edge> edges;
-  edges.reserve(3 * vertices.size());
-  for(std::size_t i = 0; i < vertices.size(); ++i)
-    for(std::size_t k = 0; k < 3; ++k)
-      edges.emplace_back(std::minmax(vertices[i][k], vertices[i][(k + 1) % 3]), i);
-  std::sort(edges.begin(), edges.end());
-  return edges;
-}
-
 // The clearance of a chart's border, relative to the diagonal of its UV bounding box: far
 // above the rounding of the packing's rotation and scale (about 1e-13 of a chart of a
 // thousandth of the atlas), far below any gap a map means.
@@ -383,15 +367,20 @@ constexpr double chart_clearance = 1e-10;
 inline bool chart_border_is_clear(const std::vector<std::array<std::size_t, 3> >& vertices,
                                   const std::vector<Eigen::Vector2d>& uv)
 {
-  const std::vector<Uv_edge> edges = sorted_uv_edges(vertices);
+  std::vector<std::pair<std::size_t, std::size_t> > edges;  // each face's UV edges, sorted
+  edges.reserve(3 * vertices.size());
+  for(const std::array<std::size_t, 3>& v : vertices)
+    for(std::size_t k = 0; k < 3; ++k)
+      edges.push_back(std::minmax(v[k], v[(k + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
   std::vector<std::array<int, 2> > border;
   Eigen::AlignedBox2d box;
   for(std::size_t a = 0, b = 0; a < edges.size(); a = b)
   {
-    for(b = a + 1; b < edges.size() && edges[b].first == edges[a].first; ++b) {}
+    for(b = a + 1; b < edges.size() && edges[b] == edges[a]; ++b) {}
     if(b == a + 1)  // an edge of one face
     {
-      const std::pair<std::size_t, std::size_t>& e = edges[a].first;
+      const std::pair<std::size_t, std::size_t>& e = edges[a];
       border.push_back({{int(e.first), int(e.second)}});
       box.extend(uv[e.first]).extend(uv[e.second]);
     }
