@@ -724,6 +724,38 @@ BOOST_AUTO_TEST_CASE(a_split_into_parts_keeps_flat_sides_whole)
     }
 }
 
+// A flattened chart's angle distortion is the parameterizer's (of the layout it kept; the
+// measure of the chart then does not compute it): it equals chart_angle_distortion() of the
+// chart's UVs, on a disk (an open box, where the circle's layout and the conformal border's
+// differ) and on a closed surface cut open by seams (the cube).
+BOOST_AUTO_TEST_CASE(a_flattened_chart_has_the_angle_distortion_of_its_uvs)
+{
+  SMP::internal::Atlas_triangles t;
+  SMP::internal::Atlas_chart cube;
+  quads_as_chart(mbp_test::cube_of_quads(4), t, cube);
+  std::vector<std::size_t> open_box;  // the cube without its side of normal +z
+  for(std::size_t f : cube.faces)
+  {
+    const Eigen::Vector3d& a = t.points[std::size_t(t.faces[f][0])];
+    const Eigen::Vector3d n = (t.points[std::size_t(t.faces[f][1])] - a).cross(t.points[std::size_t(t.faces[f][2])] - a);
+    if(!(n.z() > 0.5 * n.norm()))
+      open_box.push_back(f);
+  }
+  BOOST_REQUIRE_EQUAL(open_box.size(), cube.faces.size() * 5 / 6);
+  const SMP::Atlas_options options;
+  for(const auto& c : {std::make_pair(open_box, SMP::DISK_CHART), std::make_pair(cube.faces, SMP::SEAMED_CHART)})
+  {
+    SMP::internal::Atlas_chart chart;
+    BOOST_REQUIRE(SMP::internal::flatten_subset(t, c.first, SMP::internal::subset_neighbors(t, c.first), options, chart));
+    BOOST_CHECK(chart.flattening == c.second);
+    BOOST_CHECK(chart.angle_known);
+    SMP::internal::Atlas_chart again = chart;
+    SMP::internal::chart_angle_distortion(t, again);
+    BOOST_CHECK_GT(again.angle_distortion, 0.);
+    BOOST_CHECK_SMALL(chart.angle_distortion - again.angle_distortion, 1e-12 * (1. + again.angle_distortion));
+  }
+}
+
 // A flat strip of 16 unit quads: one chart has compactness 1/16 and fills a sixteenth of the
 // square at most. Within the default bounds it is cut across (16 -> 8 -> 4 -> 2 quads: a piece
 // of 4 has compactness 0.25 < 0.3 and is longer than half the side of a square of the strip's
