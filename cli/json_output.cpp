@@ -148,6 +148,7 @@ void write_border_choice(Json_writer& j, const Run_facts& f)
     return j.member("kind", candidate_kind(c, f.options.distance))
       .member("blend", c.blend)
       .member("mean_value_interior", c.mean_value_interior)
+      .member("holomorphic_extension", c.holomorphic_extension)
       .member("valid", c.valid)
       .member("angle_distortion", c.objective)
       .member("area_spread", c.area_spread);

@@ -58,7 +58,8 @@ std::string kept_border(const SMP::Parameterization_report& report, const std::s
   const SMP::Border_candidate& c = report.border_candidates[static_cast<std::size_t>(report.chosen_candidate)];
   const std::string kind = candidate_kind(c, distance);
   return kind + (kind == "circle" || c.blend == 0. ? std::string() : " t " + rounded(c.blend, 3)) +
-         (c.mean_value_interior ? ", mean value interior" : "") + tried;
+         (c.mean_value_interior ? ", mean value interior" : "") +
+         (c.holomorphic_extension ? ", holomorphic extension" : "") + tried;
 }
 
 std::string repair_text(const SMP::Parameterization_report& report, bool enabled)

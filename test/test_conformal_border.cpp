@@ -688,17 +688,19 @@ BOOST_AUTO_TEST_CASE(one_factorization_unless_poisson_distances_are_asked_for)
   Report conformal;
   flatten<SMP::Conformal_border>(m, uv, &conformal);
   BOOST_TEST(conformal.statistics.back_substitutions == 3);
-  // automatic with geodesic distances: still one factorization
+  // automatic with geodesic distances: one factorization for the search, one for the
+  // holomorphic extension of its layout (within the bound here: the last layout tried)
   SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<SMP::Poisson_center_locator,
     SMP::Geodesic_border_distance<SMP::Fast_marching_geodesics> > > geodesic;
   Report geodesic_report;
   BOOST_REQUIRE_EQUAL(SMP::parameterize(m, geodesic, mbp_test::longest_border(m), uv, &geodesic_report), SMP::OK);
-  BOOST_TEST(geodesic_report.statistics.factorizations == 1);
+  BOOST_TEST(geodesic_report.statistics.factorizations == 2);
+  BOOST_TEST(geodesic_report.border_candidates.back().holomorphic_extension);
   // automatic with the paper's Poisson distances: the conformal layout is valid here, so the
   // measured member is not built: no center, no spring Laplacian
   Report poisson;
   BOOST_REQUIRE_EQUAL(flatten<SMP::Automatic_border<> >(m, uv, &poisson), SMP::OK);
-  BOOST_TEST(poisson.statistics.factorizations == 1);
+  BOOST_TEST(poisson.statistics.factorizations == 2);
   BOOST_TEST(!poisson.has_center);
   // the measured border alone: the paper's two factorizations
   Report measured;
@@ -972,6 +974,112 @@ BOOST_AUTO_TEST_CASE(conformal_length_scale_factors_vanish_on_a_planar_regular_d
   for(double x : scale)
     largest = (std::max)(largest, std::abs(x));
   BOOST_TEST(largest <= 1e-10);
+}
+
+// A quarter of a cylinder (radius 1, height 1.5) on a grid of 16 x 12 quads whose vertices
+// are moved along the surface by up to 0.3 of a cell: developable, but the triangles no
+// longer lie in flat strips, so the discrete angle defects are small and not zero, and the
+// conformal border's lengths are closed by a change (as on cylinder_locally_refined.off).
+mbp_test::Soup jittered_cylinder_patch()
+{
+  const int cols = 16, rows = 12;
+  mbp_test::Soup s = grid(cols, rows, [](double a, double b) {
+    const double ja = (a > 0. && a < 1.) ? 0.3 / cols * std::sin(37. * a + 91. * b) : 0.;
+    const double jb = (b > 0. && b < 1.) ? 0.3 / rows * std::cos(53. * a - 29. * b) : 0.;
+    const double theta = 0.5 * CGAL_PI * (a + ja);
+    return std::array<double, 3>{{std::cos(theta), 1.5 * (b + jb), std::sin(theta)}};
+  });
+  return s;
+}
+
+// The UVs of the mesh's vertices, by vertex index.
+std::vector<std::array<double, 2> > uv_by_vertex(const Mesh& m, UV_map uv)
+{
+  std::vector<std::array<double, 2> > x(num_vertices(m));
+  for(vertex_descriptor v : vertices(m))
+    x[std::size_t(v)] = {{uv[v].x(), uv[v].y()}};
+  return x;
+}
+
+// The largest residual of the discrete Cauchy-Riemann equations of a layout (u, v) against a
+// dense cotangent Laplacian assembled here: L u = 0 and L v = 0 at interior vertices, and on
+// the border loop of `bhd` (L v)_k = s (u_{k+1} - u_{k-1}) / 2 for one sign s; over the
+// layout's diameter.
+double cauchy_riemann_residual(const Mesh& m, halfedge_descriptor bhd, const std::vector<std::array<double, 2> >& uv)
+{
+  Eigen::MatrixXd L;
+  std::vector<double> sums;
+  dense_laplacian(m, L, sums);
+  const std::size_t n = num_vertices(m);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(Eigen::Index(n)), v = u;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    u[Eigen::Index(i)] = uv[i][0];
+    v[Eigen::Index(i)] = uv[i][1];
+  }
+  const Eigen::VectorXd Lu = L * u, Lv = L * v;
+  std::vector<std::size_t> border;
+  std::vector<bool> on_border(n, false);
+  for(auto h : halfedges_around_face(bhd, m))
+  {
+    border.push_back(std::size_t(source(h, m)));
+    on_border[border.back()] = true;
+  }
+  double interior = 0., plus = 0., minus = 0.;
+  for(std::size_t i = 0; i < n; ++i)
+    if(!on_border[i])
+      interior = (std::max)(interior, (std::max)(std::abs(Lu[Eigen::Index(i)]), std::abs(Lv[Eigen::Index(i)])));
+  const std::size_t mb = border.size();
+  for(std::size_t k = 0; k < mb; ++k)
+  {
+    const double d = 0.5 * (u[Eigen::Index(border[(k + 1) % mb])] - u[Eigen::Index(border[(k + mb - 1) % mb])]);
+    plus = (std::max)(plus, std::abs(Lv[Eigen::Index(border[k])] - d));
+    minus = (std::max)(minus, std::abs(Lv[Eigen::Index(border[k])] + d));
+  }
+  return (std::max)(interior, (std::min)(plus, minus)) / (u.maxCoeff() - u.minCoeff());
+}
+
+BOOST_AUTO_TEST_CASE(holomorphic_extension_satisfies_the_discrete_cauchy_riemann_equations)
+{
+  for(const auto& [name, soup] : {std::make_pair("bumpy disk", mbp_test::bumpy_disk()),
+                                  std::make_pair("jittered cylinder", jittered_cylinder_patch())})
+    BOOST_TEST_CONTEXT(name)
+    {
+      Mesh m = mbp_test::make_mesh<Mesh>(soup);
+      UV_map uv = mbp_test::new_uv_map(m, "v:uv"), dirichlet = mbp_test::new_uv_map(m, "v:dirichlet");
+      Report r;
+      BOOST_REQUIRE_EQUAL(flatten<SMP::Automatic_border<> >(m, uv, &r), SMP::OK);
+      // within the bound: the extension of the kept layout was tried last and is kept
+      BOOST_REQUIRE(!r.border_candidates.empty());
+      BOOST_TEST(r.border_candidates.back().holomorphic_extension);
+      BOOST_TEST(r.holomorphic_extension);
+      BOOST_TEST(r.border_candidates[std::size_t(r.chosen_candidate)].holomorphic_extension);
+      const double holomorphic = cauchy_riemann_residual(m, mbp_test::longest_border(m), uv_by_vertex(m, uv));
+      // the conformal border with both coordinates fixed on it (Dirichlet) does not satisfy them
+      BOOST_REQUIRE_EQUAL(flatten<SMP::Conformal_border>(m, dirichlet), SMP::OK);
+      const double fixed = cauchy_riemann_residual(m, mbp_test::longest_border(m), uv_by_vertex(m, dirichlet));
+      BOOST_TEST_MESSAGE(name << ": Cauchy-Riemann residual " << holomorphic << " (Dirichlet: " << fixed << ")");
+      BOOST_TEST(holomorphic <= 1e-9);
+      BOOST_TEST(fixed > 1e3 * holomorphic);
+      // more conformal, one-to-one
+      BOOST_TEST(angle_distortion(m, uv) < angle_distortion(m, dirichlet));
+      BOOST_TEST(SMP::measure_quality(m, faces(m), uv).flipped_faces == 0u);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(holomorphic_extension_only_within_the_bound)
+{
+  // beyond the bound (1e-6 on the area spread: no layout of the bumpy disk meets it)
+  // the extension is not tried: the atlas splits such a layout, and its factorization is saved
+  Mesh m = mbp_test::make_mesh<Mesh>(mbp_test::bumpy_disk());
+  UV_map uv = mbp_test::new_uv_map(m, "v:uv");
+  const SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<> > p(
+    SMP::Automatic_border<>(SMP::Distortion_bound{0.2, 1e-6}));
+  Report r;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, p, mbp_test::longest_border(m), uv, &r), SMP::OK);
+  for(const SMP::Border_candidate& c : r.border_candidates)
+    BOOST_TEST(!c.holomorphic_extension);
+  BOOST_TEST(r.statistics.factorizations == 1);
 }
 
 BOOST_AUTO_TEST_CASE(real_disks_automatic_border, MBP_EXTENDED_TIER)

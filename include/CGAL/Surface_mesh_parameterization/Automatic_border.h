@@ -49,7 +49,18 @@ namespace Surface_mesh_parameterization {
 ///    before the best valid one so far, the smallest valid blend toward its convex border, by
 ///    five bisection steps (all such members in one batch per step); along a member the
 ///    distortion grows as the border moves toward the convex one, so the smallest valid
-///    blend is the member's best.
+///    blend is the member's best;
+/// 5. when the valid layout of lowest rank meets the bound: its holomorphic extension
+///    (Boundary First Flattening's extension of a border curve), the first coordinate kept
+///    and the second replaced by its harmonic conjugate (\f$ L y = h \f$ on the whole
+///    cotangent Laplacian, \f$ h_k = (x_{k+1} - x_{k-1}) / 2 \f$ on the border: the discrete
+///    Cauchy-Riemann equations), so that the border moves to where the map is conformal. Where
+///    the border is not exactly conformal (its lengths closed by the least change, or
+///    blended) it is more conformal than the layout it extends: on a locally refined
+///    developable disk the mean angle error drops from 0.057 to 0.014 degrees (Boundary First
+///    Flattening: 0.020). One more factorization (the whole cotangent Laplacian's), tried
+///    only within the bound, where the layout is kept: an atlas splits the others. Kept when
+///    it is one-to-one and ranks first (`Parameterization_report::holomorphic_extension`).
 ///
 /// The valid layout of lowest rank (`Distortion_bound::rank()`) is kept: among the layouts
 /// within the bound, the one of lowest angle distortion; when none is within, the one of lowest

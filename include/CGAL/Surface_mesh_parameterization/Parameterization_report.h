@@ -80,6 +80,10 @@ struct Border_candidate
   double objective = std::numeric_limits<double>::infinity();
   /// its area spread (`Distortion_bound`; `+infinity` when not valid)
   double area_spread = std::numeric_limits<double>::infinity();
+  /// whether the layout is the holomorphic extension of the border's first coordinate
+  /// (`Automatic_border`, step 5): the first coordinate the discrete conformal map's, the
+  /// second its harmonic conjugate, the border moved accordingly
+  bool holomorphic_extension = false;
 };
 
 /// \ingroup PkgSurfaceMeshParameterizationMeasured
@@ -186,6 +190,9 @@ struct Parameterization_report
   /// whether the interior of the result is the mean value coordinates map (rather than the
   /// discrete conformal map)
   bool mean_value_interior = false;
+  /// whether the result is the holomorphic extension of its border's first coordinate
+  /// (`Border_candidate::holomorphic_extension`)
+  bool holomorphic_extension = false;
   int repair_candidates = 0;  ///< layouts tried by the repair
   std::vector<Border_candidate> border_candidates;  ///< every layout tried, in the order tried (the repair's included)
   int chosen_candidate = -1;  ///< the index of the kept layout in `border_candidates` (-1 after a failure)

@@ -92,7 +92,11 @@ Error_code choose_border(const Policy& policy, Step& step, Evaluator& evaluator)
 //    Both return ERROR_CANNOT_SOLVE_LINEAR_SYSTEM for a fatal failure and any other failure
 //    to leave the member out;
 // 4. for each member whose own layout is not one-to-one but ranks (as if it were) before the
-//    best valid one so far, the smallest valid blend.
+//    best valid one so far, the smallest valid blend;
+// 5. when the kept layout meets the bound, its holomorphic extension
+//    (Border_evaluator::evaluate_holomorphic_extension(): one more factorization), kept when
+//    it is one-to-one and ranks before. Only there: a layout beyond the bound is split or
+//    repaired by the caller, and an atlas flattens many of those.
 // `repairable` gets the members in the order of their own layouts' ranks.
 template <class Evaluator, class AddMeasured, class AddLengths>
 Error_code automatic_search(Evaluator& evaluator, const AddMeasured& add_measured, const AddLengths& add_lengths,
@@ -128,6 +132,8 @@ Error_code automatic_search(Evaluator& evaluator, const AddMeasured& add_measure
       search.push_back(t.member);
   if(!search.empty())
     search_smallest_valid_blend(evaluator, search, false);
+  if(evaluator.kept_meets_bound())
+    evaluator.evaluate_holomorphic_extension();
   report.valid_before_repair = evaluator.best() >= 0;
   std::stable_sort(own.begin(), own.end(), [](const Border_trial& a, const Border_trial& b) { return a.rank < b.rank; });
   for(const Border_trial& t : own)
@@ -173,7 +179,7 @@ Error_code report_choice(const Evaluator& evaluator, bool searched, Parameteriza
 {
   for(const Border_trial& t : evaluator.trials())
     report.border_candidates.push_back(Border_candidate{t.member, t.blend, t.mean_value, t.valid, t.objective,
-                                                         t.valid ? t.area_spread : t.objective});
+                                                         t.valid ? t.area_spread : t.objective, t.holomorphic});
   report.chosen_candidate = evaluator.best();
   if(evaluator.best() < 0)
     return ERROR_NO_1_TO_1_MAPPING;
@@ -181,6 +187,7 @@ Error_code report_choice(const Evaluator& evaluator, bool searched, Parameteriza
   report.kept_border = kept.family;
   report.blend = kept.blend;
   report.mean_value_interior = kept.mean_value_interior;
+  report.holomorphic_extension = kept.holomorphic_extension;
   report.repaired = kept.mean_value_interior ||
                     (!searched && kept.blend > evaluator.members().own_blend(kept.family));
   return OK;
