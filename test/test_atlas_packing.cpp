@@ -32,6 +32,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -501,6 +502,83 @@ BOOST_AUTO_TEST_CASE(the_occupancy_finds_the_first_free_position)
       BOOST_TEST(placed > 10);
       BOOST_TEST(refused > 0);  // the atlas filled up
     }
+}
+
+// The cells that rasterize_region() marks from a chart's border (chart_border(): equal UVs
+// welded) against the union of rasterize_triangle() over its triangles, bit for bit: jittered
+// grids with triangles down to a hundredth of a texel, each face with its own three UVs (as
+// chart_to_pack() gives them), an annulus (a hole: a clockwise border loop), and grids with
+// some triangles flipped (clockwise) or collapsed to a segment or a point.
+BOOST_AUTO_TEST_CASE(a_region_rasterized_by_its_border_marks_the_cells_of_its_triangles)
+{
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  int compared = 0, flipped_sets = 0;
+  for(int trial = 0; trial < 60; ++trial)
+  {
+    const int n = 2 + trial % 7, width = 5 + int(unit(random) * 120.), height = 5 + int(unit(random) * 90.);
+    const bool annulus = trial % 5 == 3, spoil = trial % 4 == 1;
+    // the (n + 1) x (n + 1) grid points, jittered, in [1, width - 1] x [1, height - 1]
+    std::vector<Eigen::Vector2d> grid;
+    for(int i = 0; i <= n; ++i)
+      for(int j = 0; j <= n; ++j)
+      {
+        const double a = (i + 0.3 * (unit(random) - 0.5) * (i > 0 && i < n)) / n;
+        const double b = (j + 0.3 * (unit(random) - 0.5) * (j > 0 && j < n)) / n;
+        const double r = annulus ? 0.4 + 0.6 * b : 0., t = 2. * CGAL_PI * a;
+        const double x = annulus ? 0.5 + 0.5 * r * std::cos(t) : a, y = annulus ? 0.5 + 0.5 * r * std::sin(t) : b;
+        grid.emplace_back(1. + x * (width - 2), 1. + y * (height - 2));
+      }
+    auto id = [n, annulus](int i, int j) { return (annulus ? i % n : i) * (n + 1) + j; };  // a ring closes
+    Chart chart;  // each face its own three UVs
+    for(int i = 0; i < n; ++i)
+      for(int j = 0; j < n; ++j)
+        for(const std::array<int, 3>& f : {std::array<int, 3>{{id(i, j), id(i + 1, j), id(i + 1, j + 1)}},
+                                           std::array<int, 3>{{id(i, j), id(i + 1, j + 1), id(i, j + 1)}}})
+        {
+          const int first = int(chart.uv.size());
+          for(int k : f)
+            chart.uv.push_back(grid[std::size_t(k)]);
+          chart.triangles.push_back({{first, first + 1, first + 2}});
+        }
+    if(spoil)  // flip a few triangles, collapse others to a segment or a point
+    {
+      ++flipped_sets;
+      for(std::size_t f = 0; f < chart.triangles.size(); f += 5)
+      {
+        Face& t = chart.triangles[f];
+        if(f % 3 == 0)
+          std::swap(t[1], t[2]);
+        else if(f % 3 == 1)
+          chart.uv[std::size_t(t[2])] = 0.5 * (chart.uv[std::size_t(t[0])] + chart.uv[std::size_t(t[1])]);
+        else
+          chart.uv[std::size_t(t[1])] = chart.uv[std::size_t(t[2])] = chart.uv[std::size_t(t[0])];
+      }
+    }
+    const int words = SMP::internal::words_for_bits(width);
+    std::vector<std::uint64_t> by_border(std::size_t(height) * std::size_t(words), 0), by_triangles = by_border;
+    const SMP::internal::Raster_view a{width, height, words, by_border.data()}, b{width, height, words, by_triangles.data()};
+    std::vector<double> points;
+    for(const Eigen::Vector2d& p : chart.uv)
+    {
+      points.push_back(p.x());
+      points.push_back(p.y());
+    }
+    SMP::internal::Row_crossings rows;
+    SMP::internal::rasterize_region(a, SMP::internal::chart_border(chart), chart.triangles, points.data(), rows);
+    for(const Face& t : chart.triangles)
+      SMP::internal::rasterize_triangle(b, &points[2 * std::size_t(t[0])], &points[2 * std::size_t(t[1])],
+                                        &points[2 * std::size_t(t[2])]);
+    std::size_t set = 0;
+    for(std::size_t k = 0; k < by_border.size(); ++k)
+      set += std::bitset<64>(by_triangles[k]).count();
+    BOOST_TEST_REQUIRE((by_border == by_triangles), "trial " << trial << " (" << width << " x " << height << ", n " << n
+                                                           << (annulus ? ", annulus" : "") << (spoil ? ", spoiled" : "") << ")");
+    BOOST_TEST(set > 0u);
+    ++compared;
+  }
+  BOOST_TEST(compared == 60);
+  BOOST_TEST(flipped_sets == 15);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -17,6 +17,10 @@
 // - `rasterize_triangle()` marks every cell whose closed square meets the triangle grown by
 //   `raster_epsilon` (a conservative rasterization): every point of the triangle lies in a
 //   marked cell, whatever the rounding of its coordinates (errors far below the epsilon).
+// - `rasterize_region()` marks the same cells for a set of triangles (the union of
+//   `rasterize_triangle()` over them) from its border: the cells of the border edges, the
+//   cells whose center has a nonzero winding number, and the triangles that are not surely
+//   counterclockwise one by one.
 // - `dilate()` grows a raster by g cells in the 8 directions (a square of side 2g+1).
 // - `rotate_quarter()` turns a raster by +90 degrees: the cell (i, j) of a raster of height H
 //   becomes the cell (H-1-j, i), the image of the point (x, y) is (H - y, x).
@@ -27,9 +31,11 @@
 // texels apart (in the max norm, hence in the Euclidean norm).
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -171,6 +177,142 @@ inline void rasterize_triangle(const Raster_view& raster, const double* a, const
     const int x0 = std::max(c0, int(std::floor(lo - e))), x1 = std::min(c1, int(std::floor(hi + e)));
     if(x0 <= x1)
       set_span(raster.row(r), x0, x1);
+  }
+}
+
+// The border of a triangle set (corners indexing points): each edge whose net count over the
+// triangles is not zero (a -> b counts +1 and b -> a counts -1), repeated |count| times in the
+// direction of its sign. With every triangle counterclockwise the border is the boundary of
+// the set's union, the outer loops counterclockwise and the holes clockwise.
+template <class Triangles>
+std::vector<std::array<int, 2> > signed_border_edges(const Triangles& triangles)
+{
+  std::vector<std::pair<std::pair<int, int>, int> > edges;  // ((smaller, larger), +1 or -1)
+  for(const auto& t : triangles)
+    for(int k = 0; k < 3; ++k)
+    {
+      const int a = int(t[std::size_t(k)]), b = int(t[std::size_t((k + 1) % 3)]);
+      if(a != b)
+        edges.push_back({std::minmax(a, b), a < b ? 1 : -1});
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::array<int, 2> > border;
+  for(std::size_t i = 0, j = 0; i < edges.size(); i = j)
+  {
+    int count = 0;
+    for(j = i; j < edges.size() && edges[j].first == edges[i].first; ++j)
+      count += edges[j].second;
+    for(; count > 0; --count)
+      border.push_back({{edges[i].first.first, edges[i].first.second}});
+    for(; count < 0; ++count)
+      border.push_back({{edges[i].first.second, edges[i].first.first}});
+  }
+  return border;
+}
+
+// Whether the triangle (a, b, c) is counterclockwise for certain: its doubled area, computed
+// in double, above the bound of that computation's rounding.
+inline bool surely_counterclockwise(const double* a, const double* b, const double* c)
+{
+  const double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+  return ux * vy - uy * vx > 1e-14 * (std::abs(ux) + std::abs(uy)) * (std::abs(vx) + std::abs(vy));
+}
+
+// A crossing of a border edge with the center line y = row + 1/2 of a row.
+struct Row_crossing
+{
+  double x;
+  int direction;  // +1 upward, -1 downward
+  bool operator<(const Row_crossing& o) const { return x < o.x; }
+};
+
+// Work space of rasterize_region(): the crossings bucketed by row (those of row r in
+// crossings[start[r], start[r + 1])).
+struct Row_crossings
+{
+  std::vector<int> start;
+  std::vector<Row_crossing> crossings;
+};
+
+// The rows [r0, r1) whose center line y = r + 1/2 a border edge from a to b crosses
+// (low <= r + 1/2 < high), clamped to the raster; empty for a horizontal edge.
+inline std::array<int, 2> crossed_rows(const Raster_view& raster, const double* a, const double* b)
+{
+  if(!(a[1] != b[1]))
+    return {{0, 0}};
+  const double low = std::min(a[1], b[1]), high = std::max(a[1], b[1]);
+  return {{std::max(0, int(std::ceil(low - 0.5))), std::min(raster.height, int(std::ceil(high - 0.5)))}};
+}
+
+// The crossings of the border edges with the rows' center lines, bucketed by row (a counting
+// sort: a global sort of the crossings cost as much as the triangles saved), each row's
+// sorted by x.
+inline void bucket_crossings(const Raster_view& raster, const std::vector<std::array<int, 2> >& border,
+                             const double* points, Row_crossings& rows)
+{
+  auto p = [points](int i) { return points + 2 * std::size_t(i); };
+  rows.start.assign(std::size_t(raster.height) + 1, 0);
+  for(const std::array<int, 2>& e : border)
+  {
+    const std::array<int, 2> r = crossed_rows(raster, p(e[0]), p(e[1]));
+    for(int row = r[0]; row < r[1]; ++row)
+      ++rows.start[std::size_t(row) + 1];
+  }
+  for(std::size_t row = 0; row < std::size_t(raster.height); ++row)
+    rows.start[row + 1] += rows.start[row];
+  rows.crossings.resize(std::size_t(rows.start.back()));
+  std::vector<int>& next = rows.start;  // filled from each row's start, shifted back below
+  for(const std::array<int, 2>& e : border)
+  {
+    const double *a = p(e[0]), *b = p(e[1]);
+    const std::array<int, 2> r = crossed_rows(raster, a, b);
+    const double *low = a[1] < b[1] ? a : b, *high = a[1] < b[1] ? b : a;
+    const double slope = r[0] < r[1] ? (high[0] - low[0]) / (high[1] - low[1]) : 0.;
+    for(int row = r[0]; row < r[1]; ++row)
+      rows.crossings[std::size_t(next[std::size_t(row)]++)] =
+        Row_crossing{low[0] + (double(row) + 0.5 - low[1]) * slope, a[1] < b[1] ? 1 : -1};
+  }
+  for(std::size_t row = std::size_t(raster.height); row > 0; --row)
+    next[row] = next[row - 1];
+  next[0] = 0;
+  for(std::size_t row = 0; row < std::size_t(raster.height); ++row)
+    std::sort(rows.crossings.begin() + rows.start[row], rows.crossings.begin() + rows.start[row + 1]);
+}
+
+// Marks the cells of `raster` that a triangle set meets (grown by raster_epsilon), the cells
+// rasterize_triangle() marks for each triangle, by its border (signed_border_edges()): the
+// cells each border edge meets, then the cells whose center has a nonzero winding number of
+// the border, and each triangle that is not surely counterclockwise on its own. The same cells:
+// a cell that meets no border edge has its center half a cell or more away from the border,
+// far beyond the rounding of the crossings, and its center is in the union of the triangles
+// exactly when its winding number (the sum over the triangles that hold it of +1 if
+// counterclockwise, -1 if not) is not zero or a triangle that is not counterclockwise holds
+// it. Its cost is the border's and the rows', where rasterize_triangle() of every triangle
+// costs a chart's area in triangles (a chart of thousands of triangles: most of a packing
+// trial). `rows` is work space.
+template <class Triangles>
+void rasterize_region(const Raster_view& raster, const std::vector<std::array<int, 2> >& border,
+                      const Triangles& triangles, const double* points, Row_crossings& rows)
+{
+  auto p = [points](int i) { return points + 2 * std::size_t(i); };
+  for(const auto& t : triangles)
+    if(!surely_counterclockwise(p(int(t[0])), p(int(t[1])), p(int(t[2]))))
+      rasterize_triangle(raster, p(int(t[0])), p(int(t[1])), p(int(t[2])));
+  for(const std::array<int, 2>& e : border)
+    rasterize_triangle(raster, p(e[0]), p(e[1]), p(e[1]));
+  bucket_crossings(raster, border, points, rows);
+  for(int row = 0; row < raster.height; ++row)
+  {
+    int winding = 0;
+    for(int i = rows.start[std::size_t(row)]; i + 1 < rows.start[std::size_t(row) + 1]; ++i)
+    {
+      const Row_crossing &c = rows.crossings[std::size_t(i)], &d = rows.crossings[std::size_t(i) + 1];
+      winding += c.direction;
+      const int c0 = std::max(0, int(std::floor(c.x - 0.5)) + 1);
+      const int c1 = std::min(raster.width - 1, int(std::ceil(d.x - 0.5)) - 1);
+      if(winding != 0 && c0 <= c1)
+        set_span(raster.row(row), c0, c1);
+    }
   }
 }
 
