@@ -744,16 +744,17 @@ BOOST_AUTO_TEST_CASE(a_flattened_chart_has_the_angle_distortion_of_its_uvs)
   BOOST_REQUIRE_EQUAL(open_box.size(), cube.faces.size() * 5 / 6);
   const SMP::Atlas_options options;
   for(const auto& c : {std::make_pair(open_box, SMP::DISK_CHART), std::make_pair(cube.faces, SMP::SEAMED_CHART)})
-  {
-    SMP::internal::Atlas_chart chart;
-    BOOST_REQUIRE(SMP::internal::flatten_subset(t, c.first, SMP::internal::subset_neighbors(t, c.first), options, chart));
-    BOOST_CHECK(chart.flattening == c.second);
-    BOOST_CHECK(chart.angle_known);
-    SMP::internal::Atlas_chart again = chart;
-    SMP::internal::chart_angle_distortion(t, again);
-    BOOST_CHECK_GT(again.angle_distortion, 0.);
-    BOOST_CHECK_SMALL(chart.angle_distortion - again.angle_distortion, 1e-12 * (1. + again.angle_distortion));
-  }
+    for(bool whole : {true, false})  // with the holomorphic extension of a layout within the bound, and without
+    {
+      SMP::internal::Atlas_chart chart;
+      BOOST_REQUIRE(SMP::internal::flatten_subset(t, c.first, SMP::internal::subset_neighbors(t, c.first), options, whole, chart));
+      BOOST_CHECK(chart.flattening == c.second);
+      BOOST_CHECK(chart.angle_known);
+      SMP::internal::Atlas_chart again = chart;
+      SMP::internal::chart_angle_distortion(t, again);
+      BOOST_CHECK_GT(again.angle_distortion, 0.);
+      BOOST_CHECK_SMALL(chart.angle_distortion - again.angle_distortion, 1e-12 * (1. + again.angle_distortion));
+    }
 }
 
 // A flat strip of 16 unit quads: one chart has compactness 1/16 and fills a sixteenth of the

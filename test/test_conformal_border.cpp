@@ -1067,7 +1067,7 @@ BOOST_AUTO_TEST_CASE(holomorphic_extension_satisfies_the_discrete_cauchy_riemann
     }
 }
 
-BOOST_AUTO_TEST_CASE(holomorphic_extension_only_within_the_bound)
+BOOST_AUTO_TEST_CASE(holomorphic_extension_only_within_the_bound_and_when_enabled)
 {
   // beyond the bound (1e-6 on the area spread: no layout of the bumpy disk meets it)
   // the extension is not tried: the atlas splits such a layout, and its factorization is saved
@@ -1080,6 +1080,17 @@ BOOST_AUTO_TEST_CASE(holomorphic_extension_only_within_the_bound)
   for(const SMP::Border_candidate& c : r.border_candidates)
     BOOST_TEST(!c.holomorphic_extension);
   BOOST_TEST(r.statistics.factorizations == 1);
+  // turned off (as the atlas does on the parts of its splits): within the bound, not tried
+  const SMP::Conformal_parameterizer_3<Mesh, SMP::Automatic_border<> > off(
+    SMP::Automatic_border<>(SMP::Distortion_bound(), false));
+  BOOST_TEST(!SMP::Automatic_border<>(SMP::Distortion_bound(), false).holomorphic_extension());
+  Report o;
+  BOOST_REQUIRE_EQUAL(SMP::parameterize(m, off, mbp_test::longest_border(m), uv, &o), SMP::OK);
+  for(const SMP::Border_candidate& c : o.border_candidates)
+    BOOST_TEST(!c.holomorphic_extension);
+  BOOST_TEST(o.statistics.factorizations == 1);
+  BOOST_TEST(SMP::Distortion_bound().met_by(o.border_candidates[std::size_t(o.chosen_candidate)].objective,
+                                            o.border_candidates[std::size_t(o.chosen_candidate)].area_spread));
 }
 
 BOOST_AUTO_TEST_CASE(real_disks_automatic_border, MBP_EXTENDED_TIER)

@@ -61,6 +61,8 @@ namespace Surface_mesh_parameterization {
 ///    Flattening: 0.020). One more factorization (the whole cotangent Laplacian's), tried
 ///    only within the bound, where the layout is kept: an atlas splits the others. Kept when
 ///    it is one-to-one and ranks first (`Parameterization_report::holomorphic_extension`).
+///    A constructor argument turns it off (the atlas does for the parts of its splits:
+///    there it changed no median of the atlas benchmark and cost 5% of its time).
 ///
 /// The valid layout of lowest rank (`Distortion_bound::rank()`) is kept: among the layouts
 /// within the bound, the one of lowest angle distortion; when none is within, the one of lowest
@@ -84,18 +86,25 @@ public:
   typedef Measured_border<CenterLocator, BorderDistance> Measured_member;
 
   /// creates the policy with the given measured member and bound (by default 0.2 on the angle
-  /// distortion and 0.2 on the area spread, the atlas's defaults).
-  explicit Automatic_border(Measured_member measured = Measured_member(), Distortion_bound bound = Distortion_bound())
-    : m_measured(measured), m_bound(bound)
+  /// distortion and 0.2 on the area spread, the atlas's defaults); `holomorphic_extension`
+  /// (default `true`) enables step 5.
+  explicit Automatic_border(Measured_member measured = Measured_member(), Distortion_bound bound = Distortion_bound(),
+                            bool holomorphic_extension = true)
+    : m_measured(measured), m_bound(bound), m_holomorphic_extension(holomorphic_extension)
   { }
 
-  /// creates the policy with the default measured member and the given bound.
-  explicit Automatic_border(Distortion_bound bound) : Automatic_border(Measured_member(), bound) { }
+  /// creates the policy with the default measured member and the given bound, step 5 enabled
+  /// unless `holomorphic_extension` is `false`.
+  explicit Automatic_border(Distortion_bound bound, bool holomorphic_extension = true)
+    : Automatic_border(Measured_member(), bound, holomorphic_extension)
+  { }
 
   /// the policy of the measured member.
   const Measured_member& measured_border() const { return m_measured; }
   /// the bound that ranks the layouts.
   const Distortion_bound& bound() const { return m_bound; }
+  /// whether a layout within the bound is extended holomorphically (step 5).
+  bool holomorphic_extension() const { return m_holomorphic_extension; }
 
   /// \cond SKIP_IN_MANUAL
   static constexpr bool searches = true;
@@ -114,13 +123,15 @@ public:
     evaluator.rank_by(m_bound);
     return internal::automatic_search(
       evaluator, [&] { return m_measured.build(step); },
-      [&] { return internal::build_conformal_length_member(step, false); }, step.report, step.repairable);
+      [&] { return internal::build_conformal_length_member(step, false); }, step.report, step.repairable,
+      m_holomorphic_extension);
   }
   /// \endcond
 
 private:
   Measured_member m_measured;
   Distortion_bound m_bound;
+  bool m_holomorphic_extension;
 };
 
 } // namespace Surface_mesh_parameterization

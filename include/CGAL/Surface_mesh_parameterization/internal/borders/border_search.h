@@ -93,14 +93,15 @@ Error_code choose_border(const Policy& policy, Step& step, Evaluator& evaluator)
 //    to leave the member out;
 // 4. for each member whose own layout is not one-to-one but ranks (as if it were) before the
 //    best valid one so far, the smallest valid blend;
-// 5. when the kept layout meets the bound, its holomorphic extension
-//    (Border_evaluator::evaluate_holomorphic_extension(): one more factorization), kept when
-//    it is one-to-one and ranks before. Only there: a layout beyond the bound is split or
-//    repaired by the caller, and an atlas flattens many of those.
+// 5. when the kept layout meets the bound (and `holomorphic_extension`), its holomorphic
+//    extension (Border_evaluator::evaluate_holomorphic_extension(): one more factorization),
+//    kept when it is one-to-one and ranks before. Only there: a layout beyond the bound is
+//    split or repaired by the caller, and an atlas flattens many of those.
 // `repairable` gets the members in the order of their own layouts' ranks.
 template <class Evaluator, class AddMeasured, class AddLengths>
 Error_code automatic_search(Evaluator& evaluator, const AddMeasured& add_measured, const AddLengths& add_lengths,
-                            Parameterization_report& report, std::vector<Border_family>& repairable)
+                            Parameterization_report& report, std::vector<Border_family>& repairable,
+                            bool holomorphic_extension = true)
 {
   std::vector<typename Evaluator::Request> batch(1, {CIRCLE, 1.});
   const bool conformal = evaluator.members().has(CONFORMAL);
@@ -132,7 +133,7 @@ Error_code automatic_search(Evaluator& evaluator, const AddMeasured& add_measure
       search.push_back(t.member);
   if(!search.empty())
     search_smallest_valid_blend(evaluator, search, false);
-  if(evaluator.kept_meets_bound())
+  if(holomorphic_extension && evaluator.kept_meets_bound())
     evaluator.evaluate_holomorphic_extension();
   report.valid_before_repair = evaluator.best() >= 0;
   std::stable_sort(own.begin(), own.end(), [](const Border_trial& a, const Border_trial& b) { return a.rank < b.rank; });
