@@ -35,8 +35,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -722,6 +724,37 @@ BOOST_AUTO_TEST_CASE(a_split_into_parts_keeps_flat_sides_whole)
         for(const std::vector<std::size_t>& f : faces)
           BOOST_CHECK_EQUAL(f.size(), t.faces.size() / 6);
     }
+}
+
+// corners_by_vertex() against std::sort of the (vertex, corner) pairs, below and above the
+// size where it switches to its radix sort, with vertex ids beyond 16 bits (both passes).
+BOOST_AUTO_TEST_CASE(corners_are_ordered_by_vertex_as_sorted_pairs)
+{
+  std::mt19937 random(5);
+  for(std::size_t faces : {5u, 600u, 700u, 5000u})
+    for(int range : {50, 70000, 3000000})
+      BOOST_TEST_CONTEXT(faces << " faces, vertices below " << range)
+      {
+        SMP::internal::Atlas_triangles t;
+        SMP::internal::Atlas_chart chart;
+        std::uniform_int_distribution<int> vertex(0, range - 1);
+        for(std::size_t f = 0; f < faces; ++f)
+        {
+          t.faces.push_back({{vertex(random), vertex(random), vertex(random)}});
+          chart.faces.push_back(faces - 1 - f);  // not in the order of t
+        }
+        chart.corners.resize(faces);
+        std::vector<std::pair<int, std::size_t> > pairs;
+        for(std::size_t c = 0; c < 3 * faces; ++c)
+          pairs.emplace_back(t.faces[chart.faces[c / 3]][c % 3], c);
+        std::sort(pairs.begin(), pairs.end());
+        const std::vector<std::uint32_t> corners = SMP::internal::corners_by_vertex(t, chart);
+        BOOST_REQUIRE_EQUAL(corners.size(), pairs.size());
+        bool same = true;
+        for(std::size_t i = 0; i < corners.size(); ++i)
+          same = same && corners[i] == pairs[i].second;
+        BOOST_TEST(same);
+      }
 }
 
 // A flattened chart's angle distortion is the parameterizer's (of the layout it kept; the

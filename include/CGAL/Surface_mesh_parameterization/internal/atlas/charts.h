@@ -229,6 +229,37 @@ inline void unfold_across(const Atlas_triangles& t, const std::vector<std::size_
   chart.corners[g][std::size_t(kg)] = place_third_corner(pg, kg, ub, ua);
 }
 
+// The corners of a chart (3 i + k: corner k of face i) in the order of their vertices in `t`,
+// the corners of one vertex in increasing order: the order of the sorted (vertex, corner)
+// pairs. A stable radix sort on the vertex (two passes of 16 bits) on charts of 2048 corners
+// or more, where std::sort of the pairs took a few percent of the atlas's time (two sorts per
+// chart flattened: the weld and the UV vertices).
+inline std::vector<std::uint32_t> corners_by_vertex(const Atlas_triangles& t, const Atlas_chart& chart)
+{
+  const std::size_t n = 3 * chart.faces.size();
+  std::vector<std::uint64_t> keys(n), other(n);  // (vertex, corner)
+  for(std::size_t c = 0; c < n; ++c)
+    keys[c] = (std::uint64_t(std::uint32_t(t.faces[chart.faces[c / 3]][c % 3])) << 32) | std::uint64_t(c);
+  if(n < 2048)
+    std::sort(keys.begin(), keys.end());
+  else
+    for(int shift : {32, 48})  // least significant digit first; each pass stable
+    {
+      std::vector<std::size_t> start(65537, 0);
+      for(std::uint64_t key : keys)
+        ++start[std::size_t((key >> shift) & 0xffffu) + 1];
+      for(std::size_t d = 0; d < 65536; ++d)
+        start[d + 1] += start[d];
+      for(std::uint64_t key : keys)
+        other[start[std::size_t((key >> shift) & 0xffffu)]++] = key;
+      keys.swap(other);
+    }
+  std::vector<std::uint32_t> corners(n);
+  for(std::size_t i = 0; i < n; ++i)
+    corners[i] = std::uint32_t(keys[i] & 0xffffffffu);
+  return corners;
+}
+
 // Corners of one vertex whose UVs differ by rounding only (a vertex reached along two paths
 // of an unfolding's spanning tree, a vertex pinched in the chart whose two copies the map puts
 // at one place) are given one UV, the first: two faces that meet there in 3D then meet exactly
@@ -237,28 +268,24 @@ inline void unfold_across(const Atlas_triangles& t, const std::vector<std::size_
 inline bool weld_rounded_corners(const Atlas_triangles& t, Atlas_chart& chart)
 {
   Eigen::AlignedBox2d box;
-  std::vector<std::pair<int, std::size_t> > corners;  // (vertex, 3 face + k)
-  for(std::size_t i = 0; i < chart.faces.size(); ++i)
-    for(std::size_t k = 0; k < 3; ++k)
-    {
-      box.extend(chart.corners[i][k]);
-      corners.emplace_back(t.faces[chart.faces[i]][k], 3 * i + k);
-    }
+  for(const std::array<Eigen::Vector2d, 3>& c : chart.corners)
+    box.extend(c[0]).extend(c[1]).extend(c[2]);
   const double tolerance = 1e-9 * box.diagonal().norm();
-  std::sort(corners.begin(), corners.end());
+  const std::vector<std::uint32_t> corners = corners_by_vertex(t, chart);
   auto uv = [&chart](std::size_t c) -> Eigen::Vector2d& { return chart.corners[c / 3][c % 3]; };
+  auto vertex = [&](std::size_t c) { return t.faces[chart.faces[c / 3]][c % 3]; };
   bool moved = false;
   for(std::size_t first = 0; first < corners.size();)
   {
     std::size_t end = first;
-    while(end < corners.size() && corners[end].first == corners[first].first)
+    while(end < corners.size() && vertex(corners[end]) == vertex(corners[first]))
       ++end;
     for(std::size_t a = first; a < end; ++a)
       for(std::size_t b = first; b < a; ++b)
-        if((uv(corners[a].second) - uv(corners[b].second)).norm() <= tolerance)
+        if((uv(corners[a]) - uv(corners[b])).norm() <= tolerance)
         {
-          moved = moved || uv(corners[a].second) != uv(corners[b].second);
-          uv(corners[a].second) = uv(corners[b].second);
+          moved = moved || uv(corners[a]) != uv(corners[b]);
+          uv(corners[a]) = uv(corners[b]);
           break;
         }
     first = end;
@@ -307,29 +334,26 @@ inline Atlas_chart unfold_isometrically(const Atlas_triangles& t, const std::vec
 
 // The UV vertex of each corner of a chart (3 i + k: corner k of face i), numbered in the order
 // of first appearance: two corners are one UV vertex when they have the same vertex and the
-// same UV. Returns their number. The corners are sorted by vertex (64-bit keys), then the
-// corners of each vertex compared pairwise (quadratic in a vertex's corners in the chart: a
+// same UV. Returns their number. The corners are sorted by vertex (corners_by_vertex()), then
+// the corners of each vertex compared pairwise (quadratic in a vertex's corners in the chart: a
 // million comparisons for a fan of a thousand triangles), where a map keyed by (vertex, UV),
 // one node per corner, took about a tenth of the atlas's time on large meshes.
 inline std::size_t number_uv_vertices(const Atlas_triangles& t, const Atlas_chart& chart, std::vector<std::size_t>& id)
 {
   const std::size_t n = 3 * chart.faces.size();
-  std::vector<std::uint64_t> keys(n);  // (vertex, corner)
-  for(std::size_t c = 0; c < n; ++c)
-    keys[c] = (std::uint64_t(std::uint32_t(t.faces[chart.faces[c / 3]][c % 3])) << 32) | std::uint64_t(c);
-  std::sort(keys.begin(), keys.end());
-  auto corner = [](std::uint64_t key) { return std::size_t(key & 0xffffffffu); };
-  auto uv = [&](std::uint64_t key) -> const Eigen::Vector2d& { return chart.corners[corner(key) / 3][corner(key) % 3]; };
+  const std::vector<std::uint32_t> keys = corners_by_vertex(t, chart);
+  auto uv = [&](std::size_t c) -> const Eigen::Vector2d& { return chart.corners[c / 3][c % 3]; };
+  auto vertex = [&](std::size_t c) { return t.faces[chart.faces[c / 3]][c % 3]; };
   std::vector<std::size_t> first(n);  // the first corner of each corner's UV vertex
   for(std::size_t a = 0, b = 0; a < n; a = b)
   {
-    for(b = a + 1; b < n && (keys[b] >> 32) == (keys[a] >> 32); ++b) {}
+    for(b = a + 1; b < n && vertex(keys[b]) == vertex(keys[a]); ++b) {}
     for(std::size_t i = a; i < b; ++i)  // the corners of one vertex, in corner order
     {
       std::size_t j = a;
       while(j < i && uv(keys[j]) != uv(keys[i]))
         ++j;
-      first[corner(keys[i])] = (j < i) ? first[corner(keys[j])] : corner(keys[i]);
+      first[keys[i]] = (j < i) ? first[keys[j]] : keys[i];
     }
   }
   id.resize(n);
