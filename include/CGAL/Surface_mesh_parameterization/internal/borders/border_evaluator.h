@@ -88,7 +88,6 @@ public:
   // ranks the layouts evaluated from now on by `bound` (by default: infinite, i.e. by the
   // angle distortion alone)
   void rank_by(const Distortion_bound& bound) { m_bound = bound; }
-  const Distortion_bound& bound() const { return m_bound; }
   // whether a layout is kept and meets the bound
   bool kept_meets_bound() const
   {
@@ -130,7 +129,7 @@ public:
   // derivative of x). Where the border is not exactly the conformal one (its lengths closed
   // by the least change, or blended), this is more conformal than fixing both coordinates on
   // the border: on a locally refined developable disk the mean angle error drops from 0.057 to
-  // 0.012 degrees. One back-substitution of the grounded cotangent system (factorized on
+  // 0.014 degrees. One back-substitution of the grounded cotangent system (factorized on
   // first use, as for the conformal-length member); the border moves, so the layout is
   // judged as any other, its border tested simple. False when there is no kept layout to
   // extend or the system cannot be solved.
