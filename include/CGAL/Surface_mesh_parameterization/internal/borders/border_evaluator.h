@@ -202,33 +202,28 @@ private:
                                                        uv[static_cast<std::size_t>(border[(k + m - 1) % m])].x());
     if(m < 3 || m_disk.solve_cotangent_poisson(h, y) != OK || y.size() != uv.size())
       return false;
-    double before = 0., after = 0., shift = 0.;
-    for(std::size_t k = 0; k < m; ++k)
-    {
-      const std::size_t i = static_cast<std::size_t>(border[k]), j = static_cast<std::size_t>(border[(k + 1) % m]);
-      before += uv[i].x() * uv[j].y() - uv[i].y() * uv[j].x();
-      after += uv[i].x() * y[j] - y[i] * uv[j].x();
-    }
+    std::vector<Eigen::Vector2d> xy(uv.size());
+    for(std::size_t i = 0; i < uv.size(); ++i)
+      xy[i] = Eigen::Vector2d(uv[i].x(), y[i]);
+    const double before = signed_double_area(border, uv), after = signed_double_area(border, xy);
     if(!std::isfinite(after) || after == 0.)
       return false;
     const double sign = ((before > 0.) == (after > 0.)) ? 1. : -1.;
-    for(std::size_t k = 0; k < m; ++k)
-      shift += uv[static_cast<std::size_t>(border[k])].y() - sign * y[static_cast<std::size_t>(border[k])];
+    double shift = 0.;
+    for(int i : border)
+      shift += uv[static_cast<std::size_t>(i)].y() - sign * y[static_cast<std::size_t>(i)];
     shift /= double(m);
-    result.border_uv.resize(m);
-    for(std::size_t k = 0; k < m; ++k)
-    {
-      const std::size_t i = static_cast<std::size_t>(border[k]);
-      result.border_uv[k] = Eigen::Vector2d(uv[i].x(), sign * y[i] + shift);
-    }
+    for(Eigen::Vector2d& p : xy)
+      p.y() = sign * p.y() + shift;
+    for(int i : border)
+      result.border_uv.push_back(xy[static_cast<std::size_t>(i)]);
     for(int i : m_disk.interior_vertices())
     {
-      result.u.push_back(uv[static_cast<std::size_t>(i)].x());
-      result.v.push_back(sign * y[static_cast<std::size_t>(i)] + shift);
-    }
-    for(double c : result.v)
-      if(!std::isfinite(c))
+      result.u.push_back(xy[static_cast<std::size_t>(i)].x());
+      result.v.push_back(xy[static_cast<std::size_t>(i)].y());
+      if(!std::isfinite(result.v.back()))
         return false;
+    }
     return true;
   }
 
