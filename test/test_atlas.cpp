@@ -726,8 +726,8 @@ BOOST_AUTO_TEST_CASE(a_split_into_parts_keeps_flat_sides_whole)
     }
 }
 
-// corners_by_vertex() against std::sort of the (vertex, corner) pairs, below and above the
-// size where it switches to its radix sort, with vertex ids beyond 16 bits (both passes).
+// corners_by_vertex() (Boost's integer_sort of packed keys) against std::sort of the
+// (vertex, corner) pairs, on small and large charts, with vertex ids beyond 16 and 21 bits.
 BOOST_AUTO_TEST_CASE(corners_are_ordered_by_vertex_as_sorted_pairs)
 {
   std::mt19937 random(5);

@@ -25,6 +25,8 @@
 #include <CGAL/Surface_mesh_parameterization/internal/core/triangle_geometry.h>
 #include <CGAL/Surface_mesh_parameterization/internal/core/validity.h>
 
+#include <boost/sort/spreadsort/integer_sort.hpp>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -230,30 +232,16 @@ inline void unfold_across(const Atlas_triangles& t, const std::vector<std::size_
 }
 
 // The corners of a chart (3 i + k: corner k of face i) in the order of their vertices in `t`,
-// the corners of one vertex in increasing order: the order of the sorted (vertex, corner)
-// pairs. A stable radix sort on the vertex (two passes of 16 bits) on charts of 2048 corners
-// or more, where std::sort of the pairs took a few percent of the atlas's time (two sorts per
-// chart flattened: the weld and the UV vertices).
+// the corners of one vertex in increasing order: the sorted (vertex, corner) keys, sorted by
+// Boost's integer_sort (a radix-based hybrid), where std::sort took a few percent of the
+// atlas's time (two sorts per chart flattened: the weld and the UV vertices).
 inline std::vector<std::uint32_t> corners_by_vertex(const Atlas_triangles& t, const Atlas_chart& chart)
 {
   const std::size_t n = 3 * chart.faces.size();
-  std::vector<std::uint64_t> keys(n), other(n);  // (vertex, corner)
+  std::vector<std::uint64_t> keys(n);  // (vertex, corner)
   for(std::size_t c = 0; c < n; ++c)
     keys[c] = (std::uint64_t(std::uint32_t(t.faces[chart.faces[c / 3]][c % 3])) << 32) | std::uint64_t(c);
-  if(n < 2048)
-    std::sort(keys.begin(), keys.end());
-  else
-    for(int shift : {32, 48})  // least significant digit first; each pass stable
-    {
-      std::vector<std::size_t> start(65537, 0);
-      for(std::uint64_t key : keys)
-        ++start[std::size_t((key >> shift) & 0xffffu) + 1];
-      for(std::size_t d = 0; d < 65536; ++d)
-        start[d + 1] += start[d];
-      for(std::uint64_t key : keys)
-        other[start[std::size_t((key >> shift) & 0xffffu)]++] = key;
-      keys.swap(other);
-    }
+  boost::sort::spreadsort::integer_sort(keys.begin(), keys.end());
   std::vector<std::uint32_t> corners(n);
   for(std::size_t i = 0; i < n; ++i)
     corners[i] = std::uint32_t(keys[i] & 0xffffffffu);
